@@ -1,0 +1,54 @@
+# vesica: two commands set everything up.
+#   make demo   install missing Debian packages, build (Release), run the demo pipeline
+#   make test   same set-up, then every test through ctest
+#   make bench  same set-up, then the benchmarks (JSON in build/bench/)
+# Everything is idempotent: a second call installs nothing and rebuilds only what changed.
+
+BUILD_DIR ?= build
+JOBS      ?= $(shell nproc)
+SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
+  libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
+  libeigen3-dev libsuitesparse-dev libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
+  libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
+  xvfb xauth chromium snakemake
+
+.PHONY: all deps configure build demo test bench format clean
+
+all: build
+
+# Installs only what is missing; silent when everything is present.
+deps:
+	@missing=$$(for p in $(DEBIAN_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "ok installed" || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing Debian packages:" $$missing; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing >/dev/null; \
+	fi
+
+$(BUILD_DIR)/build.ninja: CMakeLists.txt | deps
+	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+configure: deps $(BUILD_DIR)/build.ninja
+
+build: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+demo: build
+	$(BUILD_DIR)/bin/vesica run pipelines/demo.yaml --workdir $(BUILD_DIR)/demo
+	@echo "Demo outputs in $(BUILD_DIR)/demo; report: $(BUILD_DIR)/demo/report/index.html"
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	bench/run.sh $(BUILD_DIR)
+
+format:
+	find core segment surface mesh simulate compare pipelines tests bench \
+	  \( -name '*.h' -o -name '*.cpp' \) -print0 | xargs -0 clang-format -i
+
+clean:
+	rm -rf $(BUILD_DIR)

@@ -1,0 +1,36 @@
+#pragma once
+// The one exception type of vesica. It carries the file concerned, the problem and a
+// hint, so that every executable can print a single line that says what went wrong,
+// where, and what to do about it.
+#include <stdexcept>
+#include <string>
+
+namespace vesica {
+
+class Error : public std::runtime_error {
+ public:
+  // Usage errors (bad command line, bad pipeline file) exit with 2; failures with 1.
+  enum class Kind { Usage, Failure };
+
+  Error(std::string file, std::string problem, std::string hint = {},
+        Kind kind = Kind::Failure);
+
+  const std::string& file() const { return file_; }
+  const std::string& problem() const { return problem_; }
+  const std::string& hint() const { return hint_; }
+  Kind kind() const { return kind_; }
+  int exit_code() const { return kind_ == Kind::Usage ? 2 : 1; }
+
+ private:
+  std::string file_;
+  std::string problem_;
+  std::string hint_;
+  Kind kind_;
+};
+
+// Shorthand for the common case of a user error in a named file.
+[[noreturn]] void fail(const std::string& file, const std::string& problem,
+                       const std::string& hint = {});
+[[noreturn]] void usage_error(const std::string& problem, const std::string& hint = {});
+
+}  // namespace vesica

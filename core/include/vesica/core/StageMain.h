@@ -1,0 +1,29 @@
+#pragma once
+// The common frame of every vesica executable: shared options (--report, --manifest,
+// --json, --verbose), and one place that turns any error into a single line on stderr
+// and an exit code: 0 success, 1 failure, 2 usage.
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace vesica {
+
+struct CommonOptions {
+  std::string report;    // summary JSON path
+  std::string manifest;  // manifest JSON path
+  bool json = false;     // print the summary JSON on stdout, nothing else
+  bool verbose = false;
+};
+
+void add_common_options(CLI::App& app, CommonOptions& options);
+
+// Parses argv into app, applies --json/--verbose to logging and progress, then runs body.
+// Returns the process exit code.
+int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& options,
+                   const std::function<int()>& body);
+
+// Manifest default: beside the report when one is given, else beside the main output.
+std::string default_manifest_path(const CommonOptions& options, const std::string& output);
+
+}  // namespace vesica

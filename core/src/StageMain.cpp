@@ -1,0 +1,61 @@
+#include "vesica/core/StageMain.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "vesica/core/Error.h"
+#include "vesica/core/Log.h"
+#include "vesica/core/Progress.h"
+#include "vesica/core/Version.h"
+
+namespace vesica {
+
+void add_common_options(CLI::App& app, CommonOptions& options) {
+  app.add_option("--report", options.report, "Write the stage summary (JSON) here");
+  app.add_option("--manifest", options.manifest,
+                 "Write the manifest (inputs, outputs, hashes, parameters) here");
+  app.add_flag("--json", options.json, "Print the summary as JSON on stdout; no progress");
+  app.add_flag("-v,--verbose", options.verbose, "More log detail");
+  app.set_version_flag("--version", std::string(vesica::kVersionString));
+}
+
+int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& options,
+                   const std::function<int()>& body) {
+  const std::string tool = app.get_name();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "%s: usage error: %s (see %s --help)\n", tool.c_str(), e.what(),
+                 tool.c_str());
+    return 2;
+  }
+  set_quiet(options.json);
+  configure_logging(options.json, options.verbose);
+  try {
+    return body();
+  } catch (const Error& e) {
+    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    return 1;
+  }
+}
+
+std::string default_manifest_path(const CommonOptions& options, const std::string& output) {
+  if (!options.manifest.empty()) return options.manifest;
+  namespace fs = std::filesystem;
+  if (!options.report.empty()) {
+    fs::path r(options.report);
+    return (r.parent_path() / (r.stem().string() + ".manifest.json")).string();
+  }
+  return output + ".manifest.json";
+}
+
+}  // namespace vesica
