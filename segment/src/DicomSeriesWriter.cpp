@@ -1,0 +1,118 @@
+#include "vesica/segment/DicomSeriesWriter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include <gdcmUIDGenerator.h>
+#include <itkCastImageFilter.h>
+#include <itkGDCMImageIO.h>
+#include <itkImageSeriesWriter.h>
+#include <itkMetaDataObject.h>
+
+#include "vesica/core/Error.h"
+
+namespace vesica::segment {
+namespace {
+
+using StoredImage = itk::Image<short, 3>;
+using SliceImage = itk::Image<short, 2>;
+constexpr double kRescaleIntercept = -1024.0;  // stored = HU + 1024, as many scanners do
+
+std::string decimal_list(std::initializer_list<double> values) {
+  std::ostringstream s;
+  s.precision(10);
+  bool first = true;
+  for (double v : values) {
+    if (!first) s << '\\';
+    // Tiny values would print in scientific notation; DICOM DS accepts it but keep it tidy.
+    s << (std::abs(v) < 1e-9 ? 0.0 : v);
+    first = false;
+  }
+  return s.str();
+}
+
+StoredImage::Pointer rounded_hu(const CtImage& image) {
+  auto out = StoredImage::New();
+  out->CopyInformation(&image);
+  out->SetRegions(image.GetLargestPossibleRegion());
+  out->Allocate();
+  const float* in = image.GetBufferPointer();
+  short* dst = out->GetBufferPointer();
+  const std::size_t n = image.GetLargestPossibleRegion().GetNumberOfPixels();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double hu = std::round(in[i]);
+    dst[i] = static_cast<short>(std::clamp(hu, -1024.0, 3071.0));
+  }
+  return out;
+}
+
+}  // namespace
+
+DicomSeriesInfo write_dicom_series(const CtImage& image, const std::filesystem::path& dir,
+                                   const std::string& series_description) {
+  std::filesystem::create_directories(dir);
+  gdcm::UIDGenerator uids;
+  DicomSeriesInfo info;
+  info.study_uid = uids.Generate();
+  info.series_uid = uids.Generate();
+  info.series_description = series_description;
+  const auto stored = rounded_hu(image);
+  const auto size = image.GetLargestPossibleRegion().GetSize();
+  const auto& d = image.GetDirection();
+  const auto& s = image.GetSpacing();
+  info.slice_count = static_cast<int>(size[2]);
+
+  auto io = itk::GDCMImageIO::New();
+  io->KeepOriginalUIDOn();  // use our UIDs, not fresh ones per file
+  using Writer = itk::ImageSeriesWriter<StoredImage, SliceImage>;
+  Writer::DictionaryArrayType dictionaries;
+  std::vector<itk::MetaDataDictionary> storage(size[2]);
+  std::vector<std::string> names;
+  for (itk::SizeValueType k = 0; k < size[2]; ++k) {
+    auto& dict = storage[k];
+    auto set = [&dict](const std::string& tag, const std::string& value) {
+      itk::EncapsulateMetaData<std::string>(dict, tag, value);
+    };
+    StoredImage::PointType position;
+    stored->TransformIndexToPhysicalPoint({{0, 0, static_cast<itk::IndexValueType>(k)}}, position);
+    set("0010|0010", "VESICA^PHANTOM");  // placeholder only; no real patient data
+    set("0010|0020", "PHANTOM");
+    set("0008|0060", "CT");
+    set("0028|0004", "MONOCHROME2");
+    set("0008|0016", "1.2.840.10008.5.1.4.1.1.2");  // CT Image Storage
+    set("0020|000d", info.study_uid);
+    set("0020|000e", info.series_uid);
+    set("0008|0018", uids.Generate());
+    set("0008|103e", series_description);
+    set("0020|0011", "1");
+    set("0020|0013", std::to_string(k + 1));
+    set("0020|0032", decimal_list({position[0], position[1], position[2]}));
+    set("0020|0037", decimal_list({d(0, 0), d(1, 0), d(2, 0), d(0, 1), d(1, 1), d(2, 1)}));
+    set("0028|0030", decimal_list({s[1], s[0]}));  // row spacing \ column spacing
+    set("0018|0050", decimal_list({s[2]}));
+    set("0028|1052", decimal_list({kRescaleIntercept}));
+    set("0028|1053", "1");
+    set("0028|1054", "HU");
+    dictionaries.push_back(&dict);
+    char name[32];
+    std::snprintf(name, sizeof name, "slice_%04lu.dcm", static_cast<unsigned long>(k + 1));
+    names.push_back((dir / name).string());
+  }
+  auto writer = Writer::New();
+  writer->SetInput(stored);
+  writer->SetImageIO(io);
+  writer->SetFileNames(names);
+  writer->SetMetaDataDictionaryArray(&dictionaries);
+  try {
+    writer->Update();
+  } catch (const itk::ExceptionObject& e) {
+    fail(dir.string(), std::string("cannot write DICOM series: ") + e.GetDescription());
+  }
+  return info;
+}
+
+}  // namespace vesica::segment
