@@ -1,0 +1,90 @@
+#pragma once
+// The pipeline file as written (YAML): stages with their inputs, outputs and parameters,
+// named external inputs and an optional study. Positions are kept for error messages.
+// Loading never throws: every problem goes to a Diagnostics list.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "vesica/pipelines/Diagnostics.h"
+
+namespace vesica::pipelines {
+
+// A path as written: relative to the workdir, or "${inputs.name}" for an external input.
+struct PathRef {
+  std::string text;
+  SourcePos pos;
+};
+
+// One `--key value` of a stage. `key` is the pipeline-file spelling (underscores).
+struct Param {
+  enum class Kind { Value, Flag, Omitted };  // Flag: `true`; Omitted: `false`
+  std::string key;
+  Kind kind = Kind::Value;
+  std::string value;  // lists are already joined as a,b,c
+  SourcePos pos;
+};
+
+struct StageSpec {
+  std::string name;
+  std::string tool;  // defaults to the stage name
+  SourcePos pos;
+  SourcePos tool_pos;
+  std::vector<PathRef> positional;                     // `input`
+  std::vector<std::pair<std::string, PathRef>> named;  // `inputs` (map order kept)
+  PathRef output;
+  PathRef report;    // empty: default beside the output
+  PathRef manifest;  // empty: default beside the output
+  std::vector<Param> params;
+};
+
+struct ExternalInput {
+  std::string name;
+  std::string path;  // as written, relative to the pipeline file
+  SourcePos pos;
+};
+
+// `study: matrix:` one axis: `stage.param: [values]`.
+struct MatrixAxis {
+  std::string stage;
+  std::vector<Param> values;  // same key, one entry per value
+  SourcePos pos;
+};
+
+// A parameter set on one stage by a study run.
+struct Override {
+  std::string stage;
+  Param param;
+};
+
+struct Variant {
+  std::string name;
+  std::vector<Override> overrides;
+  SourcePos pos;
+};
+
+struct StudySpec {
+  std::vector<MatrixAxis> matrix;
+  std::vector<Variant> variants;
+  SourcePos pos;
+  bool present() const { return !matrix.empty() || !variants.empty(); }
+};
+
+struct PipelineSpec {
+  std::filesystem::path file;  // absolute
+  std::string name;
+  std::string workdir = ".";  // relative to the file's folder
+  SourcePos workdir_pos;
+  std::vector<ExternalInput> externals;
+  std::vector<StageSpec> stages;  // file order
+  StudySpec study;
+
+  const StageSpec* find_stage(const std::string& name) const;
+};
+
+PipelineSpec load_pipeline_file(const std::filesystem::path& file, Diagnostics& diagnostics);
+// Same, from text (tests); `file` only names the source.
+PipelineSpec parse_pipeline_text(const std::string& text, const std::filesystem::path& file,
+                                 Diagnostics& diagnostics);
+
+}  // namespace vesica::pipelines

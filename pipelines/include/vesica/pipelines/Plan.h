@@ -1,0 +1,63 @@
+#pragma once
+// What the runner executes: every stage (and every study copy of a stage) with its exact
+// argument list, its paths relative to the workdir and the stages it depends on, in an
+// order where each stage comes after its dependencies.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "vesica/pipelines/Diagnostics.h"
+#include "vesica/pipelines/PipelineFile.h"
+
+namespace vesica::pipelines {
+
+struct PlannedStage {
+  std::string id;       // "surface", or "surface@variant" for a study copy
+  std::string stage;    // the stage's name in the file
+  std::string variant;  // empty when shared by every run
+  std::string tool;
+  std::filesystem::path executable;
+  std::vector<std::string> argv;    // arguments after the program, exactly as passed
+  std::vector<std::string> inputs;  // relative to the workdir (or absolute)
+  std::string output;               // relative to the workdir
+  std::string report;
+  std::string manifest;
+  std::vector<Param> params;
+  std::vector<std::size_t> deps;  // indices into Plan::stages
+};
+
+struct Plan {
+  std::string name;
+  std::filesystem::path file;
+  std::filesystem::path workdir;  // absolute
+  std::vector<PlannedStage> stages;
+
+  // Index of the stage with this id, or -1.
+  long index_of(const std::string& id) const;
+  // Index of the stage that writes `path` (or the folder containing it), or -1.
+  long producer_of(const std::string& path) const;
+  // Every stage downstream of `index` (not including it).
+  std::vector<std::size_t> downstream_of(std::size_t index) const;
+  std::filesystem::path in_workdir(const std::string& path) const;
+};
+
+struct PlanOptions {
+  std::filesystem::path workdir_override;  // empty: the file's `workdir`
+  std::filesystem::path bin_dir;           // where vesica-<tool> executables live
+};
+
+// Checks tools, paths, external inputs, duplicate outputs and cycles; expands the study.
+// On problems the diagnostics are filled and the plan should not be run.
+Plan build_plan(const PipelineSpec& spec, const PlanOptions& options, Diagnostics& diagnostics);
+
+// The stage tools vesica ships; any other `vesica-<tool>` found in bin_dir is accepted too
+// (the tests register their own stage commands that way).
+const std::vector<std::string>& builtin_tools();
+
+// Folder of the running executable (/proc/self/exe).
+std::filesystem::path own_bin_dir();
+
+// Normalised generic form without a trailing slash: "a/./b/" -> "a/b".
+std::string normal_path(const std::string& path);
+
+}  // namespace vesica::pipelines

@@ -1,0 +1,223 @@
+#include "vesica/pipelines/Commands.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <optional>
+
+#include <CLI/CLI.hpp>
+
+#include "vesica/core/Error.h"
+#include "vesica/core/Version.h"
+#include "vesica/pipelines/Plan.h"
+#include "vesica/pipelines/Runner.h"
+#include "vesica/pipelines/SnakemakeExport.h"
+#include "vesica/pipelines/Staleness.h"
+#include "vesica/pipelines/Suggest.h"
+
+namespace fs = std::filesystem;
+
+namespace vesica::pipelines {
+namespace {
+
+constexpr const char* kHelp = R"(vesica — CT to bladder simulation, driven by a pipeline file
+
+Usage:
+  vesica validate FILE                 check a pipeline file (exit 2 on problems)
+  vesica run FILE [options]            run the stale stages in dependency order
+      --only STAGE    only this stage (repeatable; runs it if stale)
+      --from STAGE    rerun this stage and everything downstream
+      --force         run every selected stage, stale or not
+      --workdir DIR   outputs go here instead of the file's workdir
+      -j N            run up to N independent stages at once
+      --json          no progress; print the result as JSON
+  vesica status FILE [--workdir DIR] [--json]
+                                       each stage: fresh, stale or missing, and why
+  vesica export --snakemake FILE [--workdir DIR] > Snakefile
+                                       the same pipeline as a Snakemake workflow
+  vesica phantom OUT_DIR [args...]     synthetic CT: runs vesica-phantom -o OUT_DIR args...
+  vesica help | --version
+
+Stage executables vesica-<tool> are looked up beside this program.
+See docs/pipeline-file.md for the file format and the staleness rules.
+)";
+
+struct Loaded {
+  Plan plan;
+  int exit_code = 0;
+};
+
+// Loads and checks the file; prints FILE:LINE:COL problems and sets exit code 2.
+Loaded load(const std::string& file, const std::string& workdir) {
+  Diagnostics d;
+  const PipelineSpec spec = load_pipeline_file(file, d);
+  Loaded l;
+  // The plan is built even after file problems, so that one pass reports them all.
+  l.plan = build_plan(spec, {workdir, own_bin_dir()}, d);
+  if (!d.empty()) {
+    std::fputs(d.format(file).c_str(), stderr);
+    l.exit_code = 2;
+  }
+  return l;
+}
+
+int parse(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "vesica %s: usage error: %s (see vesica help)\n", app.get_name().c_str(),
+                 e.what());
+    return 2;
+  }
+  return -1;
+}
+
+int validate(int argc, char** argv) {
+  CLI::App app("Check a pipeline file", "validate");
+  std::string file, workdir;
+  app.add_option("file", file, "Pipeline file")->required();
+  app.add_option("--workdir", workdir, "Workdir to check inputs against");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  Loaded l = load(file, workdir);
+  if (l.exit_code) return l.exit_code;
+  std::printf("%s: ok (%zu stages)\n", file.c_str(), l.plan.stages.size());
+  return 0;
+}
+
+int status(int argc, char** argv) {
+  CLI::App app("Show which stages are fresh", "status");
+  std::string file, workdir;
+  bool json = false;
+  app.add_option("file", file, "Pipeline file")->required();
+  app.add_option("--workdir", workdir, "Outputs folder");
+  app.add_flag("--json", json, "JSON instead of a table");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  Loaded l = load(file, workdir);
+  if (l.exit_code) return l.exit_code;
+  const auto st = assess(l.plan);
+  if (json) {
+    nlohmann::json j = nlohmann::json::array();
+    for (std::size_t i = 0; i < st.size(); ++i)
+      j.push_back({{"stage", l.plan.stages[i].id},
+                   {"state", to_string(st[i].state)},
+                   {"reason", st[i].reason}});
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::size_t width = 5;
+  for (const auto& s : l.plan.stages) width = std::max(width, s.id.size());
+  std::printf("%-*s  %-7s  %s\n", static_cast<int>(width), "STAGE", "STATE", "REASON");
+  for (std::size_t i = 0; i < st.size(); ++i)
+    std::printf("%-*s  %-7s  %s\n", static_cast<int>(width), l.plan.stages[i].id.c_str(),
+                to_string(st[i].state), st[i].reason.c_str());
+  return 0;
+}
+
+int run(int argc, char** argv) {
+  CLI::App app("Run the stale stages", "run");
+  std::string file, workdir;
+  bool json = false;
+  RunOptions options;
+  app.add_option("file", file, "Pipeline file")->required();
+  app.add_option("--only", options.only, "Only these stages");
+  app.add_option("--from", options.from, "Rerun from these stages on");
+  app.add_flag("--force", options.force, "Run every selected stage");
+  app.add_option("--workdir", workdir, "Outputs folder");
+  app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
+  app.add_flag("--json", json, "Print the result as JSON, no progress");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  Loaded l = load(file, workdir);
+  if (l.exit_code) return l.exit_code;
+  options.capture = json;
+  if (!json)
+    options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+  const RunResult r = run_plan(l.plan, options);
+  if (json) std::cout << r.to_json().dump(2) << "\n";
+  if (!r.ok) {
+    const auto& failed = r.stages[static_cast<std::size_t>(l.plan.index_of(r.failed_stage))];
+    std::fprintf(stderr, "vesica: stage '%s' failed (exit %d): %s\n", r.failed_stage.c_str(),
+                 failed.exit_code, r.failure_line.c_str());
+    return 1;
+  }
+  if (!json) {
+    const std::size_t ran = r.ran().size();
+    if (ran == 0)
+      std::fprintf(stderr, "vesica: nothing to do, %zu stages are fresh\n", r.stages.size());
+    else
+      std::fprintf(stderr, "vesica: %zu of %zu stages ran; outputs in %s\n", ran, r.stages.size(),
+                   l.plan.workdir.c_str());
+  }
+  return 0;
+}
+
+int export_workflow(int argc, char** argv) {
+  CLI::App app("Write the pipeline as a workflow for another engine", "export");
+  std::string file, workdir;
+  bool snakemake = false;
+  app.add_option("file", file, "Pipeline file")->required();
+  app.add_flag("--snakemake", snakemake, "Snakemake workflow (Snakefile) on stdout")->required();
+  app.add_option("--workdir", workdir, "Outputs folder");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  Loaded l = load(file, workdir);
+  if (l.exit_code) return l.exit_code;
+  std::cout << snakemake_workflow(l.plan);
+  return 0;
+}
+
+// Replaces this process with vesica-phantom, so its output and exit code are the user's.
+int phantom(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+    std::fputs("usage: vesica phantom OUT_DIR [vesica-phantom options...]\n", stderr);
+    return 2;
+  }
+  const fs::path exe = own_bin_dir() / "vesica-phantom";
+  std::vector<std::string> args = {exe.string(), "-o", argv[1]};
+  for (int i = 2; i < argc; ++i) args.emplace_back(argv[i]);
+  std::vector<char*> c_args;
+  for (auto& a : args) c_args.push_back(a.data());
+  c_args.push_back(nullptr);
+  ::execv(c_args[0], c_args.data());
+  std::fprintf(stderr, "vesica: error: %s: cannot be started (build vesica-phantom first)\n",
+               exe.c_str());
+  return 1;
+}
+
+}  // namespace
+
+int vesica_main(int argc, char** argv) {
+  const std::vector<std::string> commands = {"validate", "run",     "status",
+                                             "export",   "phantom", "help"};
+  if (argc < 2) {
+    std::fputs(kHelp, stderr);
+    return 2;
+  }
+  const std::string command = argv[1];
+  try {
+    if (command == "help" || command == "--help" || command == "-h") {
+      std::fputs(kHelp, stdout);
+      return 0;
+    }
+    if (command == "--version") {
+      std::printf("%s\n", kVersionString);
+      return 0;
+    }
+    if (command == "validate") return validate(argc - 1, argv + 1);
+    if (command == "run") return run(argc - 1, argv + 1);
+    if (command == "status") return status(argc - 1, argv + 1);
+    if (command == "export") return export_workflow(argc - 1, argv + 1);
+    if (command == "phantom") return phantom(argc - 1, argv + 1);
+    std::fprintf(stderr, "vesica: unknown command '%s'%s (see vesica help)\n", command.c_str(),
+                 did_you_mean(command, commands).c_str());
+    return 2;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "vesica: error: %s\n", e.what());
+    return e.exit_code();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vesica: error: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace vesica::pipelines

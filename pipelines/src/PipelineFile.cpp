@@ -1,0 +1,310 @@
+#include "vesica/pipelines/PipelineFile.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "vesica/pipelines/Suggest.h"
+
+namespace fs = std::filesystem;
+
+namespace vesica::pipelines {
+namespace {
+
+const std::vector<std::string> kTopKeys = {"pipeline", "workdir", "inputs", "stages", "study"};
+const std::vector<std::string> kStageKeys = {"tool",   "input",    "inputs", "output",
+                                             "report", "manifest", "params"};
+const std::vector<std::string> kStudyKeys = {"matrix", "variants"};
+
+SourcePos pos_of(const YAML::Node& node) {
+  const YAML::Mark m = node.Mark();
+  if (m.is_null()) return {};
+  return {m.line + 1, m.column + 1};
+}
+
+SourcePos pos_of(const YAML::Mark& m) {
+  return {m.line + 1, m.column + 1};
+}
+
+const char* type_name(const YAML::Node& n) {
+  switch (n.Type()) {
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Scalar:
+      return "a value";
+    default:
+      return "empty";
+  }
+}
+
+// Loads one document and reports problems against the original file's positions.
+class Reader {
+ public:
+  Reader(const fs::path& file, Diagnostics& d) : d_(d) { spec_.file = file; }
+
+  PipelineSpec read(const YAML::Node& root) {
+    if (!root.IsMap()) {
+      d_.add(pos_of(root),
+             std::string("the pipeline file must be a map, found ") + type_name(root));
+      return spec_;
+    }
+    for (const auto& kv : root) {
+      const std::string key = kv.first.as<std::string>();
+      const YAML::Node& v = kv.second;
+      if (key == "pipeline") {
+        if (scalar(v, "pipeline")) spec_.name = v.as<std::string>();
+      } else if (key == "workdir") {
+        if (scalar(v, "workdir")) {
+          spec_.workdir = v.as<std::string>();
+          spec_.workdir_pos = pos_of(v);
+        }
+      } else if (key == "inputs") {
+        read_externals(v);
+      } else if (key == "stages") {
+        read_stages(v);
+      } else if (key == "study") {
+        read_study(v);
+      } else {
+        unknown(kv.first, key, kTopKeys, "top-level key");
+      }
+    }
+    if (!root["stages"]) d_.add({1, 1}, "the pipeline has no 'stages'");
+    if (spec_.name.empty()) spec_.name = spec_.file.stem().string();
+    return spec_;
+  }
+
+ private:
+  void unknown(const YAML::Node& key_node, const std::string& key,
+               const std::vector<std::string>& known, const std::string& what) {
+    d_.add(pos_of(key_node), "unknown " + what + " '" + key + "'" + did_you_mean(key, known));
+  }
+
+  bool scalar(const YAML::Node& v, const std::string& what) {
+    if (v.IsScalar()) return true;
+    d_.add(pos_of(v), "'" + what + "' must be a single value, found " + type_name(v));
+    return false;
+  }
+
+  bool map(const YAML::Node& v, const std::string& what) {
+    if (v.IsMap()) return true;
+    d_.add(pos_of(v), "'" + what + "' must be a map, found " + type_name(v));
+    return false;
+  }
+
+  void read_externals(const YAML::Node& v) {
+    if (!map(v, "inputs")) return;
+    for (const auto& kv : v)
+      if (scalar(kv.second, "inputs." + kv.first.as<std::string>()))
+        spec_.externals.push_back(
+            {kv.first.as<std::string>(), kv.second.as<std::string>(), pos_of(kv.second)});
+  }
+
+  void read_stages(const YAML::Node& v) {
+    if (!map(v, "stages")) return;
+    for (const auto& kv : v) {
+      StageSpec s;
+      s.name = kv.first.as<std::string>();
+      s.pos = pos_of(kv.first);
+      s.tool = s.name;
+      s.tool_pos = s.pos;
+      if (spec_.find_stage(s.name)) d_.add(s.pos, "stage '" + s.name + "' is defined twice");
+      if (s.name.find_first_of("@/ ") != std::string::npos)
+        d_.add(s.pos, "stage name '" + s.name + "' may not contain '@', '/' or spaces");
+      if (map(kv.second, "stages." + s.name)) read_stage(kv.second, s);
+      spec_.stages.push_back(std::move(s));
+    }
+  }
+
+  void read_stage(const YAML::Node& v, StageSpec& s) {
+    for (const auto& kv : v) {
+      const std::string key = kv.first.as<std::string>();
+      const YAML::Node& x = kv.second;
+      const std::string where = s.name + "." + key;
+      if (key == "tool") {
+        if (scalar(x, where)) {
+          s.tool = x.as<std::string>();
+          s.tool_pos = pos_of(x);
+        }
+      } else if (key == "input") {
+        read_positional(x, where, s);
+      } else if (key == "inputs") {
+        if (map(x, where))
+          for (const auto& in : x)
+            if (scalar(in.second, where + "." + in.first.as<std::string>()))
+              s.named.push_back(
+                  {in.first.as<std::string>(), {in.second.as<std::string>(), pos_of(in.second)}});
+      } else if (key == "output" || key == "report" || key == "manifest") {
+        if (scalar(x, where)) {
+          PathRef& target = key == "output" ? s.output : key == "report" ? s.report : s.manifest;
+          target = {x.as<std::string>(), pos_of(x)};
+        }
+      } else if (key == "params") {
+        if (map(x, where))
+          for (const auto& p : x) {
+            Param param;
+            if (read_param(p.first.as<std::string>(), p.second, where, param))
+              s.params.push_back(param);
+          }
+      } else {
+        unknown(kv.first, key, kStageKeys, "stage key");
+      }
+    }
+    if (s.output.text.empty()) d_.add(s.pos, "stage '" + s.name + "' has no 'output'");
+  }
+
+  void read_positional(const YAML::Node& x, const std::string& where, StageSpec& s) {
+    if (x.IsScalar()) {
+      s.positional.push_back({x.as<std::string>(), pos_of(x)});
+    } else if (x.IsSequence()) {
+      for (const auto& item : x)
+        if (scalar(item, where)) s.positional.push_back({item.as<std::string>(), pos_of(item)});
+    } else {
+      d_.add(pos_of(x), "'" + where + "' must be a path or a list of paths, found " + type_name(x));
+    }
+  }
+
+  // Plain (unquoted) true/false become a bare flag or nothing; quoted stays a value.
+  static bool is_plain(const YAML::Node& x) { return x.Tag() == "?"; }
+
+  bool read_param(const std::string& key, const YAML::Node& x, const std::string& where,
+                  Param& param) {
+    param.key = key;
+    param.pos = pos_of(x);
+    if (x.IsScalar()) {
+      const std::string text = x.as<std::string>();
+      if (is_plain(x) && (text == "true" || text == "True" || text == "TRUE")) {
+        param.kind = Param::Kind::Flag;
+      } else if (is_plain(x) && (text == "false" || text == "False" || text == "FALSE")) {
+        param.kind = Param::Kind::Omitted;
+      } else {
+        param.value = text;
+      }
+      return true;
+    }
+    if (x.IsSequence()) {
+      for (const auto& item : x) {
+        if (!scalar(item, where + "." + key)) return false;
+        if (!param.value.empty()) param.value += ",";
+        param.value += item.as<std::string>();
+      }
+      return true;
+    }
+    d_.add(pos_of(x), "parameter '" + where + "." + key +
+                          "' must be a value or a list of values, found " + type_name(x));
+    return false;
+  }
+
+  // "stage.param" -> (stage, param); false (and a diagnostic) when malformed.
+  bool split_stage_param(const YAML::Node& key_node, std::string& stage, std::string& param) {
+    const std::string key = key_node.as<std::string>();
+    const auto dot = key.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == key.size()) {
+      d_.add(pos_of(key_node), "study key '" + key + "' must be written stage.param");
+      return false;
+    }
+    stage = key.substr(0, dot);
+    param = key.substr(dot + 1);
+    return true;
+  }
+
+  void read_study(const YAML::Node& v) {
+    if (!map(v, "study")) return;
+    spec_.study.pos = pos_of(v);
+    for (const auto& kv : v) {
+      const std::string key = kv.first.as<std::string>();
+      if (key == "matrix") {
+        read_matrix(kv.second);
+      } else if (key == "variants") {
+        read_variants(kv.second);
+      } else {
+        unknown(kv.first, key, kStudyKeys, "study key");
+      }
+    }
+  }
+
+  void read_matrix(const YAML::Node& v) {
+    if (!map(v, "study.matrix")) return;
+    for (const auto& kv : v) {
+      MatrixAxis axis;
+      std::string param;
+      axis.pos = pos_of(kv.first);
+      if (!split_stage_param(kv.first, axis.stage, param)) continue;
+      if (!kv.second.IsSequence() || kv.second.size() == 0) {
+        d_.add(pos_of(kv.second),
+               "study.matrix." + axis.stage + "." + param + " must be a non-empty list of values");
+        continue;
+      }
+      for (const auto& item : kv.second) {
+        Param p;
+        if (read_param(param, item, "study.matrix." + axis.stage, p)) axis.values.push_back(p);
+      }
+      spec_.study.matrix.push_back(axis);
+    }
+  }
+
+  void read_variants(const YAML::Node& v) {
+    if (!map(v, "study.variants")) return;
+    for (const auto& kv : v) {
+      Variant variant;
+      variant.name = kv.first.as<std::string>();
+      variant.pos = pos_of(kv.first);
+      if (variant.name.find_first_of("/@ ") != std::string::npos)
+        d_.add(variant.pos,
+               "variant name '" + variant.name + "' may not contain '/', '@' or spaces");
+      if (!kv.second.IsNull() && !map(kv.second, "study.variants." + variant.name)) continue;
+      if (kv.second.IsMap())
+        for (const auto& o : kv.second) {
+          Override ov;
+          std::string param;
+          if (!split_stage_param(o.first, ov.stage, param)) continue;
+          if (read_param(param, o.second, "study.variants." + variant.name, ov.param))
+            variant.overrides.push_back(ov);
+        }
+      spec_.study.variants.push_back(variant);
+    }
+  }
+
+  Diagnostics& d_;
+  PipelineSpec spec_;
+};
+
+}  // namespace
+
+const StageSpec* PipelineSpec::find_stage(const std::string& stage_name) const {
+  for (const auto& s : stages)
+    if (s.name == stage_name) return &s;
+  return nullptr;
+}
+
+PipelineSpec parse_pipeline_text(const std::string& text, const fs::path& file,
+                                 Diagnostics& diagnostics) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    diagnostics.add(pos_of(e.mark), "malformed YAML: " + e.msg);
+    PipelineSpec empty;
+    empty.file = file;
+    return empty;
+  }
+  return Reader(file, diagnostics).read(root);
+}
+
+PipelineSpec load_pipeline_file(const fs::path& file, Diagnostics& diagnostics) {
+  const fs::path absolute = fs::absolute(file).lexically_normal();
+  std::ifstream in(absolute, std::ios::binary);
+  if (!in) {
+    diagnostics.add({}, "cannot be read");
+    PipelineSpec empty;
+    empty.file = absolute;
+    return empty;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_pipeline_text(text.str(), absolute, diagnostics);
+}
+
+}  // namespace vesica::pipelines

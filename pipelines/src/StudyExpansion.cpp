@@ -1,0 +1,61 @@
+#include "vesica/pipelines/StudyExpansion.h"
+
+namespace vesica::pipelines {
+namespace {
+
+// Folder-safe text of a value: "0.5" stays, "a,b" becomes "a+b", "/" is dropped.
+std::string folder_safe(const Param& p) {
+  if (p.kind == Param::Kind::Flag) return "on";
+  if (p.kind == Param::Kind::Omitted) return "off";
+  std::string s;
+  for (char c : p.value) s += (c == '/' || c == ' ' || c == ',') ? '+' : c;
+  return s;
+}
+
+}  // namespace
+
+std::vector<StudyRun> expand_study(const StudySpec& study) {
+  if (!study.present()) return {};
+  std::vector<StudyRun> runs;
+  if (study.variants.empty()) {
+    runs.push_back({});
+  } else {
+    for (const auto& v : study.variants) {
+      StudyRun run;
+      run.name = v.name;
+      for (const auto& o : v.overrides) run.overrides[o.stage].push_back(o.param);
+      runs.push_back(run);
+    }
+  }
+  for (const auto& axis : study.matrix) {
+    std::vector<StudyRun> next;
+    for (const auto& run : runs)
+      for (const auto& value : axis.values) {
+        StudyRun r = run;
+        const std::string part = value.key + "-" + folder_safe(value);
+        r.name = r.name.empty() ? part : r.name + "_" + part;
+        auto& params = r.overrides[axis.stage];
+        params = apply_overrides(params, {value});
+        next.push_back(r);
+      }
+    runs = std::move(next);
+  }
+  return runs;
+}
+
+std::vector<Param> apply_overrides(const std::vector<Param>& base,
+                                   const std::vector<Param>& overrides) {
+  std::vector<Param> out = base;
+  for (const auto& o : overrides) {
+    bool replaced = false;
+    for (auto& p : out)
+      if (p.key == o.key) {
+        p = o;
+        replaced = true;
+      }
+    if (!replaced) out.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace vesica::pipelines

@@ -1,0 +1,155 @@
+// `vesica run` and `vesica status` on a chain of test stages a -> b -> c -> d, where the
+// expected file contents follow by hand from the stage rule "inputs, then the label".
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "PipelineTestSupport.h"
+
+namespace fs = std::filesystem;
+using namespace vesica::test;
+
+namespace {
+
+// c writes a folder; d reads a file inside it, so d depends on c by path.
+std::string chain_yaml(const std::string& c_params = "{label: C, dir: true}") {
+  return "pipeline: chain\n"
+         "workdir: out\n"
+         "stages:\n"
+         "  a: {tool: teststage, output: a.txt, params: {label: A}}\n"
+         "  b: {tool: teststage, input: a.txt, output: b.txt, params: {label: B}}\n"
+         "  c: {tool: teststage, input: b.txt, output: c/dir, params: " +
+         c_params +
+         "}\n"
+         "  d: {tool: teststage, input: c/dir/data.txt, output: d.txt, params: {label: D}}\n";
+}
+
+struct Chain {
+  fs::path dir, file, out;
+  explicit Chain(const std::string& name) : dir(scratch_dir(name)) {
+    file = dir / "chain.yaml";
+    out = dir / "out";
+    write_text(file, chain_yaml());
+  }
+};
+
+}  // namespace
+
+TEST(Runner, FirstRunRunsEverythingSecondRunNothing) {
+  Chain c("runner-noop");
+  EXPECT_EQ(run_json(c.file, c.dir), (Ids{"a", "b", "c", "d"}));
+  EXPECT_EQ(slurp(c.out / "d.txt"), "A\nB\nC\nD\n");
+  EXPECT_EQ(slurp(c.out / "c/dir/data.txt"), "A\nB\nC\n");
+  EXPECT_TRUE(fs::exists(c.out / "c/c.manifest.json"));  // default: beside the output
+  EXPECT_TRUE(fs::exists(c.out / "c/c.json"));
+  EXPECT_EQ(run_json(c.file, c.dir), Ids{});
+  for (const auto& [stage, st] : status_of(c.file, c.dir)) EXPECT_EQ(st.first, "fresh") << stage;
+}
+
+TEST(Runner, EditedIntermediateRerunsExactlyItsStageAndDownstream) {
+  Chain c("runner-edit");
+  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
+  write_text(c.out / "b.txt", "edited by hand\n");
+  auto st = status_of(c.file, c.dir);
+  EXPECT_EQ(st["a"].first, "fresh");
+  EXPECT_EQ(st["b"], std::make_pair(std::string("stale"), std::string("output b.txt was edited")));
+  EXPECT_EQ(st["c"],
+            std::make_pair(std::string("stale"), std::string("input b.txt changed (upstream b)")));
+  EXPECT_EQ(st["d"], std::make_pair(std::string("stale"), std::string("upstream c is stale")));
+  EXPECT_EQ(run_json(c.file, c.dir), (Ids{"b", "c", "d"}));
+  EXPECT_EQ(slurp(c.out / "b.txt"), "A\nB\n");
+  EXPECT_EQ(slurp(c.out / "d.txt"), "A\nB\nC\nD\n");
+}
+
+TEST(Runner, ParameterChangeRerunsThatStageAndBelow) {
+  Chain c("runner-param");
+  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
+  write_text(c.file, chain_yaml("{label: C2, dir: true}"));
+  auto st = status_of(c.file, c.dir);
+  EXPECT_EQ(st["b"].first, "fresh");
+  EXPECT_EQ(st["c"].second, "parameter label changed (C -> C2)");
+  EXPECT_EQ(run_json(c.file, c.dir), (Ids{"c", "d"}));
+  EXPECT_EQ(slurp(c.out / "d.txt"), "A\nB\nC2\nD\n");
+}
+
+TEST(Runner, TouchedButUnchangedFileIsFresh) {
+  Chain c("runner-touch");
+  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
+  write_text(c.out / "b.txt", slurp(c.out / "b.txt"));  // same bytes, new mtime
+  EXPECT_EQ(run_json(c.file, c.dir), Ids{});
+}
+
+TEST(Runner, FailingStageKeepsEarlierOutputsAndNextRunResumesThere) {
+  Chain c("runner-fail");
+  write_text(c.file, chain_yaml("{label: C, dir: true, fail: true}"));
+  const CommandResult r = run_vesica("run " + quoted(c.file.string()), c.dir);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("stage 'c' failed (exit 1): vesica-teststage: error: c/dir: told to fail"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(slurp(c.out / "a.txt"), "A\n");
+  EXPECT_EQ(slurp(c.out / "b.txt"), "A\nB\n");
+  EXPECT_FALSE(fs::exists(c.out / "c/dir"));
+  EXPECT_FALSE(fs::exists(c.out / "d.txt"));
+
+  write_text(c.file, chain_yaml());
+  EXPECT_EQ(run_json(c.file, c.dir), (Ids{"c", "d"}));
+  EXPECT_EQ(slurp(c.out / "d.txt"), "A\nB\nC\nD\n");
+}
+
+TEST(Runner, FailureOfARerunKeepsTheOldOutputAndStaysStale) {
+  Chain c("runner-fail-rerun");
+  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
+  write_text(c.file, chain_yaml("{label: C, dir: true, fail: true}"));
+  int code = 0;
+  EXPECT_EQ(run_json(c.file, c.dir, "", &code), Ids{});
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(slurp(c.out / "c/dir/data.txt"), "A\nB\nC\n");  // written atomically before
+  write_text(c.file, chain_yaml());
+  // The manifest was removed when c started, so c reruns even with its old parameters.
+  EXPECT_EQ(status_of(c.file, c.dir)["c"].first, "missing");
+  EXPECT_EQ(run_json(c.file, c.dir), (Ids{"c", "d"}));
+}
+
+TEST(Runner, OnlyFromAndForceSelectStages) {
+  Chain c("runner-select");
+  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
+  EXPECT_EQ(run_json(c.file, c.dir, "--from b"), (Ids{"b", "c", "d"}));
+  EXPECT_EQ(run_json(c.file, c.dir, "--only c --force"), Ids{"c"});
+  EXPECT_EQ(run_json(c.file, c.dir, "--only c"), Ids{});
+  const CommandResult r = run_vesica("run " + quoted(c.file.string()) + " --only cc", c.dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("no stage named 'cc' (did you mean 'c'?)"), std::string::npos) << r.err;
+}
+
+TEST(Runner, WorkdirOverride) {
+  Chain c("runner-workdir");
+  EXPECT_EQ(run_json(c.file, c.dir, "--workdir " + quoted((c.dir / "elsewhere").string())).size(),
+            4u);
+  EXPECT_EQ(slurp(c.dir / "elsewhere" / "d.txt"), "A\nB\nC\nD\n");
+  EXPECT_FALSE(fs::exists(c.out));
+}
+
+TEST(Runner, IndependentStagesRunInParallel) {
+  const fs::path dir = scratch_dir("runner-parallel");
+  const fs::path file = dir / "diamond.yaml";
+  // b and c each sleep 700 ms; with -j 2 they overlap.
+  write_text(
+      file,
+      "stages:\n"
+      "  a: {tool: teststage, output: a.txt, params: {label: A}}\n"
+      "  b: {tool: teststage, input: a.txt, output: b.txt, params: {label: B, sleep_ms: 700}}\n"
+      "  c: {tool: teststage, input: a.txt, output: c.txt, params: {label: C, sleep_ms: 700}}\n"
+      "  d:\n"
+      "    tool: teststage\n"
+      "    input: b.txt\n"
+      "    inputs: {aux: c.txt}\n"
+      "    output: d.txt\n"
+      "    params: {label: D}\n");
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(run_json(file, dir, "-j 2").size(), 4u);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(slurp(dir / "d.txt"), "A\nB\nA\nC\nD\n");
+  EXPECT_LT(seconds, 1.35) << "b and c did not overlap";
+}
