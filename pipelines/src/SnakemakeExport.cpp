@@ -41,10 +41,6 @@ std::string rule_name(const std::string& id) {
   return name;
 }
 
-std::string output_declaration(const std::string& path) {
-  return is_folder_output(path) ? "directory(" + py(path) + ")" : py(path);
-}
-
 }  // namespace
 
 std::string snakemake_workflow(const Plan& plan) {
@@ -58,16 +54,16 @@ std::string snakemake_workflow(const Plan& plan) {
     for (std::size_t d : s.deps) consumed.insert(d);
   out += "rule all:\n    input:\n";
   for (std::size_t i = 0; i < plan.stages.size(); ++i)
-    if (!consumed.count(i)) out += "        " + py(plan.stages[i].output) + ",\n";
+    if (!consumed.count(i)) out += "        " + py(plan.stages[i].manifest) + ",\n";
   out += "\n";
   for (const auto& s : plan.stages) {
     out += "rule " + rule_name(s.id) + ":\n";
     std::set<std::string> inputs;
     for (const auto& in : s.inputs) {
       const long producer = plan.producer_of(in);
-      // Snakemake cannot depend on a file inside another rule's directory() output.
+      // Folders are tracked through their stage's manifest (see the header).
       inputs.insert(producer >= 0 && is_folder_output(plan.stages[producer].output)
-                        ? plan.stages[producer].output
+                        ? plan.stages[producer].manifest
                         : in);
     }
     if (!inputs.empty()) {
@@ -75,7 +71,7 @@ std::string snakemake_workflow(const Plan& plan) {
       for (const auto& in : inputs) out += "        " + py(in) + ",\n";
     }
     out += "    output:\n";
-    out += "        " + output_declaration(s.output) + ",\n";
+    if (!is_folder_output(s.output)) out += "        " + py(s.output) + ",\n";
     out += "        " + py(s.report) + ",\n";
     out += "        " + py(s.manifest) + ",\n";
     std::string command = shell_word(s.executable.string());

@@ -8,8 +8,10 @@
 
 namespace vesica::pipelines {
 
-// Outputs without an extension ("phantom/dicom", "sim", "report") are folders, declared
-// with directory(); an input inside another stage's folder depends on that folder.
+// Outputs without an extension ("phantom/dicom", "sim", "report") are folders. They are
+// not declared as directory() outputs, because Snakemake would add a marker file to them
+// and change their content hash; a rule reading from a folder depends on the manifest of
+// the stage that writes it instead (the manifest is written last, after the folder).
 std::string snakemake_workflow(const Plan& plan);
 
 }  // namespace vesica::pipelines
