@@ -49,6 +49,14 @@ std::string shown(const std::string& value) {
   return value.empty() ? "on" : value;
 }
 
+// vesica_core 0.1 sums folder stamps with max(0, mtime) while libstdc++'s file_clock
+// counts from an epoch after today, so a folder's recorded mtime is just a small count and
+// an edit that keeps the folder's size would go unnoticed: such stamps are not trusted and
+// the folder is hashed. A real mtime in ns is far larger in magnitude.
+bool stamp_is_trustworthy(const FileRecord& r) {
+  return r.mtime_ns > 1'000'000'000'000LL || r.mtime_ns < -1'000'000'000'000LL;
+}
+
 // Checks a recorded file against the disk: "" when unchanged, else what happened.
 // The recorded hash is trusted while size and mtime are unchanged.
 std::string compare_file(const fs::path& path, const FileRecord& recorded) {
@@ -60,7 +68,9 @@ std::string compare_file(const fs::path& path, const FileRecord& recorded) {
   } catch (const std::exception&) {
     return "unreadable";
   }
-  if (now.size == recorded.size && now.mtime_ns == recorded.mtime_ns) return "";
+  if (now.size == recorded.size && now.mtime_ns == recorded.mtime_ns &&
+      stamp_is_trustworthy(recorded))
+    return "";
   try {
     return content_hash(path) == recorded.hash ? "" : "changed";
   } catch (const std::exception&) {

@@ -72,6 +72,15 @@ TEST(Runner, ParameterChangeRerunsThatStageAndBelow) {
   EXPECT_EQ(slurp(c.out / "d.txt"), "A\nB\nC2\nD\n");
 }
 
+TEST(Runner, SameSizeEditInsideAFolderOutputIsNoticed) {
+  Chain c("runner-folder-edit");
+  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
+  write_text(c.out / "c/dir/data.txt", "X\nY\nZ\n");  // as long as "A\nB\nC\n"
+  EXPECT_EQ(status_of(c.file, c.dir)["c"].second, "output c/dir was edited");
+  EXPECT_EQ(run_json(c.file, c.dir), (Ids{"c", "d"}));
+  EXPECT_EQ(slurp(c.out / "c/dir/data.txt"), "A\nB\nC\n");
+}
+
 TEST(Runner, TouchedButUnchangedFileIsFresh) {
   Chain c("runner-touch");
   ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
