@@ -2,6 +2,8 @@
 // and the exact command lines a file turns into.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "PipelineTestSupport.h"
 #include "vesica/pipelines/Plan.h"
 
@@ -166,4 +168,25 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
   EXPECT_EQ(plan.stages[1].argv, surface);
   EXPECT_EQ(plan.stages[1].deps, std::vector<std::size_t>{0});
   EXPECT_EQ(plan.workdir, (dir / "study" / "out").lexically_normal());
+}
+
+TEST(PipelineFile, DemoPipelineChainsTheSixStagesByTheirContracts) {
+  const fs::path file = source_dir() / "pipelines" / "demo.yaml";
+  Diagnostics d;
+  const auto plan = build_plan(vesica::pipelines::load_pipeline_file(file, d),
+                               {scratch_dir("demo-plan"), bin_dir()}, d);
+  ASSERT_TRUE(d.empty()) << d.format(file.string());
+  std::vector<std::string> ids;
+  for (const auto& s : plan.stages) ids.push_back(s.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"phantom", "segment", "surface", "mesh", "simulate",
+                                           "compare"}));
+  // Each stage depends on the one before it, found through the paths alone.
+  for (std::size_t i = 1; i < plan.stages.size(); ++i)
+    EXPECT_EQ(plan.stages[i].deps, std::vector<std::size_t>{i - 1}) << ids[i];
+  const auto& compare = plan.stages.back().argv;
+  const auto measured = std::find(compare.begin(), compare.end(), "--measured");
+  ASSERT_NE(measured, compare.end());
+  EXPECT_TRUE(fs::exists(plan.in_workdir(*(measured + 1))));
+  EXPECT_NE(std::find(compare.begin(), compare.end(), "sim/history.csv"), compare.end());
+  EXPECT_EQ(plan.stages[0].argv[0], "-o");  // the phantom has no input
 }
