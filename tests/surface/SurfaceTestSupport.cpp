@@ -1,0 +1,51 @@
+#include "SurfaceTestSupport.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <vtkGenericCell.h>
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
+
+#include "vesica/surface/VtkConversion.h"
+
+namespace vesica::test {
+
+double max_distance_to_triangles(const Eigen::MatrixXd& points, const Eigen::MatrixXd& V,
+                                 const Eigen::MatrixXi& F) {
+  surface::TriangleSurface target{V, F, {}};
+  auto poly = surface::to_polydata(target);
+  auto locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  locator->SetDataSet(poly);
+  locator->BuildLocator();
+  auto cell = vtkSmartPointer<vtkGenericCell>::New();
+  double worst = 0.0;
+  for (Eigen::Index i = 0; i < points.rows(); ++i) {
+    double x[3] = {points(i, 0), points(i, 1), points(i, 2)}, closest[3], d2 = 0;
+    vtkIdType cell_id = -1;
+    int sub_id = 0;
+    locator->FindClosestPoint(x, closest, cell, cell_id, sub_id, d2);
+    worst = std::max(worst, std::sqrt(d2));
+  }
+  return worst;
+}
+
+Eigen::MatrixXd surface_samples(const surface::TriangleSurface& s) {
+  Eigen::MatrixXd samples(s.V.rows() + s.F.rows(), 3);
+  samples.topRows(s.V.rows()) = s.V;
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
+    samples.row(s.V.rows() + f) =
+        (s.V.row(s.F(f, 0)) + s.V.row(s.F(f, 1)) + s.V.row(s.F(f, 2))) / 3.0;
+  return samples;
+}
+
+surface::TriangleSurface run_stage(const surface::SurfaceStageOptions& options,
+                                   nlohmann::json* summary) {
+  const char* argv[] = {"test"};
+  StageRecord record("vesica-surface", 1, argv);
+  surface::TriangleSurface s = surface::run_surface_stage(options, record);
+  if (summary) *summary = record.summary();
+  return s;
+}
+
+}  // namespace vesica::test
