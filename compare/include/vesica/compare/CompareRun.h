@@ -1,0 +1,35 @@
+#pragma once
+// One run of vesica-compare: read, analyse, compare, calibrate, write the report folder
+// (index.html, metrics.json) and the stage summary/manifest.
+#include <string>
+#include <vector>
+
+#include "vesica/compare/Artefacts.h"
+#include "vesica/core/StageMain.h"
+
+namespace vesica::compare {
+
+// The level-1 model the calibration simulates (values at the start of the fit).
+struct CalibrationModel {
+  double mu_kpa = 5.0;
+  double k_kpa = 10.0;
+  double thickness_mm = 3.0;
+  double start_ml = 50.0;
+};
+
+struct CompareOptions {
+  std::string measured, simulated, output;
+  std::string columns;
+  std::string pressure_unit = "cmh2o";
+  std::string mesh;
+  std::string calibrate;
+  std::vector<double> fit_volume_ml;  // empty or {lo, hi}
+  ArtefactOptions artefacts;
+  CalibrationModel simulation;
+  int max_simulations = 40;
+};
+
+// Returns the exit code; throws vesica::Error on bad input before writing anything.
+int run_compare(const CompareOptions& options, const CommonOptions& common, int argc, char** argv);
+
+}  // namespace vesica::compare

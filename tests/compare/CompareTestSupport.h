@@ -1,0 +1,50 @@
+#pragma once
+// Helpers of the end-to-end compare tests: run a command, read a file, make a small
+// wall mesh (.vtu) with a stress array for the wall-stress picture.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "TestData.h"
+
+namespace vesica::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+inline CommandResult run_command(const std::string& command) {
+  CommandResult r;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf{};
+  while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
+  const int status = ::pclose(pipe);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+inline std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+inline std::filesystem::path compare_data(const std::string& name) {
+  return source_dir() / "tests/compare/data" / name;
+}
+
+inline std::string compare_exe() {
+  return (bin_dir() / "vesica-compare").string();
+}
+
+// A sphere of triangles (radius 40 mm) with a cell array "max_principal_stress_kpa" that
+// grows with height, written as .vtu.
+void write_stress_sphere(const std::filesystem::path& vtu);
+
+}  // namespace vesica::test

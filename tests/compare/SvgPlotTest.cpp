@@ -1,0 +1,53 @@
+// SvgPlot: data land where the axis mapping says, every element kind is emitted, text is
+// escaped.
+#include <cmath>
+#include <regex>
+
+#include <gtest/gtest.h>
+
+#include "vesica/compare/SvgPlot.h"
+
+using vesica::compare::SvgPlot;
+
+TEST(SvgPlot, MapsDataIntoThePlotArea) {
+  // 720 x 400 with margins left 64, right 230, top 34, bottom 48: plot area 426 x 318
+  SvgPlot plot("t", "x (ml)", "y (cmH2O)");
+  plot.x_range(0, 10).y_range(0, 100).add_points("p", {0, 10, 5}, {0, 100, 50});
+  const std::string svg = plot.render();
+  EXPECT_NE(svg.find("cx=\"64.00\" cy=\"352.00\""), std::string::npos) << svg;   // (0, 0)
+  EXPECT_NE(svg.find("cx=\"490.00\" cy=\"34.00\""), std::string::npos) << svg;   // (10, 100)
+  EXPECT_NE(svg.find("cx=\"277.00\" cy=\"193.00\""), std::string::npos) << svg;  // (5, 50)
+}
+
+TEST(SvgPlot, EmitsSeriesMarksLegendAndLabels) {
+  SvgPlot plot("A <title>", "volume (ml)", "Pdet (cmH2O)");
+  plot.add_line("sim", {0, 1, 2}, {0, 1, 4})
+      .add_points("meas", {0.5}, {0.5})
+      .add_hline(2, "h")
+      .add_vline(1, "v")
+      .add_sloped_line(0, 1, "slope")
+      .add_hband(1, 2, "hb")
+      .add_vband(0.2, 0.4, "vb");
+  const std::string svg = plot.render();
+  EXPECT_EQ(std::count(svg.begin(), svg.end(), '\n') > 10, true);
+  const auto count = [&](const std::string& what) {
+    const std::regex re(what);
+    return std::distance(std::sregex_iterator(svg.begin(), svg.end(), re), std::sregex_iterator());
+  };
+  EXPECT_EQ(count("<path class=\"series\""), 1);
+  EXPECT_EQ(count("<circle class=\"series\""), 1);
+  EXPECT_EQ(count("<path class=\"reference\""), 3);
+  EXPECT_EQ(count("<rect class=\"band\""), 2);
+  EXPECT_NE(svg.find("A &lt;title&gt;"), std::string::npos);
+  EXPECT_NE(svg.find(">volume (ml)<"), std::string::npos);
+  EXPECT_NE(svg.find(">Pdet (cmH2O)<"), std::string::npos);
+  EXPECT_NE(svg.find(">slope<"), std::string::npos);  // legend entry for a mark
+}
+
+TEST(SvgPlot, NaNBreaksALine) {
+  SvgPlot plot("gap", "x", "y");
+  plot.add_line("l", {0, 1, 2, 3}, {0, 1, std::nan(""), 3});
+  const std::string svg = plot.render();
+  const auto path = svg.substr(svg.find("<path class=\"series\""));
+  EXPECT_EQ(std::count(path.begin(), path.begin() + path.find("/>"), 'M'), 2);
+}
