@@ -111,7 +111,7 @@ int status(int argc, char** argv) {
   std::printf("%-*s  %-7s  %s\n", static_cast<int>(width), "STAGE", "STATE", "REASON");
   for (std::size_t i = 0; i < st.size(); ++i)
     std::printf("%-*s  %-7s  %s\n", static_cast<int>(width), l.plan.stages[i].id.c_str(),
-                to_string(st[i].state), st[i].reason.c_str());
+                to_string(st[i].state), st[i].reason.empty() ? "-" : st[i].reason.c_str());
   return 0;
 }
 

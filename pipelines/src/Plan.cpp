@@ -165,12 +165,15 @@ class Planner {
     return -1;
   }
 
-  long link(BaseStage& b, const std::string& path, const SourcePos& pos) {
+  // `external`: written as ${inputs.NAME}, whose existence was checked with the inputs.
+  long link(BaseStage& b, const std::string& path, const PathRef& ref) {
+    const SourcePos& pos = ref.pos;
+    const bool external = ref.text.find("${") != std::string::npos;
     const long producer = base_producer(path);
     if (producer >= 0) {
       if (std::count(b.deps.begin(), b.deps.end(), producer) == 0)
         b.deps.push_back(static_cast<std::size_t>(producer));
-    } else if (!fs::exists((plan_.workdir / path).lexically_normal())) {
+    } else if (!external && !fs::exists((plan_.workdir / path).lexically_normal())) {
       d_.add(pos, "input '" + path + "' of stage '" + b.spec->name +
                       "' is not written by any stage and does not exist (looked in " +
                       plan_.workdir.string() + ")");
@@ -181,9 +184,9 @@ class Planner {
   void find_dependencies() {
     for (auto& b : base_) {
       for (std::size_t k = 0; k < b.positional.size(); ++k)
-        b.producer_of_positional.push_back(link(b, b.positional[k], b.spec->positional[k].pos));
+        b.producer_of_positional.push_back(link(b, b.positional[k], b.spec->positional[k]));
       for (std::size_t k = 0; k < b.named.size(); ++k)
-        b.producer_of_named.push_back(link(b, b.named[k].second, b.spec->named[k].second.pos));
+        b.producer_of_named.push_back(link(b, b.named[k].second, b.spec->named[k].second));
     }
   }
 
