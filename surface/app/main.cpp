@@ -74,8 +74,8 @@ void record_given_options(const CLI::App& app, vesica::StageRecord& record) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{
-      "vesica-surface: label map -> closed, remeshed, region-tagged bladder surface (mm, LPS)"};
+  CLI::App app{"Label map -> closed, remeshed, region-tagged bladder surface (mm, LPS)",
+               "vesica-surface"};
   vesica::CommonOptions common;
   vesica::add_common_options(app, common);
   SurfaceStageOptions options;
