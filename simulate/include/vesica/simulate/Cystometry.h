@@ -1,0 +1,115 @@
+#pragma once
+// Simulated cystometry on the level-1 wall-urine model (physics.md §4, §5, §7): the urine
+// is an enclosed incompressible fluid with a hydrostatic pressure field; its pressure at
+// the reference height is solved together with the wall (bordered Newton, volume
+// control), driven by the infusion and drained by the outlet law while voiding.
+//
+// This is the stable in-process API used by vesica-simulate, the calibration in compare
+// and the studies:
+//   WallModel wall = load_wall("bladder.vtu", WallOptions{});
+//   CystometryResult r = run_cystometry(wall, {"neo-hookean", {{"mu", 5e3}, {"K", 1e4}}},
+//                                       CystometryProtocol{}, RunOptions{});
+// RunOptions{} writes nothing (fast repeated calls); set output_dir for files, and
+// filling_only to stop at capacity.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "vesica/simulate/Material.h"
+#include "vesica/simulate/NewtonSolver.h"
+#include "vesica/simulate/WallModel.h"
+
+namespace vesica::simulate {
+
+enum class Posture { Supine, Sitting };
+enum class ReferenceState { Scale, Prestress };
+
+// How the imaged surface becomes the stress-free reference wall.
+struct WallOptions {
+  double thickness_mm = 3.0;  // where the mesh gives no thickness_mm
+  ReferenceState reference = ReferenceState::Scale;
+  double residual_ml = 50.0;           // Scale: stress-free volume (thesis: about 50 ml)
+  double fixed_patch_radius_mm = 8.0;  // when the mesh has no outlet/inlet/fixed region
+  Posture posture = Posture::Supine;   // decides "down" for the fallback fixed patch
+};
+
+// Gravity vector in LPS patient coordinates (m/s²): supine = towards posterior (+y),
+// sitting = towards inferior (-z).
+Eigen::Vector3d gravity_lps(Posture posture);
+
+// Reads the mesh (MeshReader.h), makes the reference state (Scale: about the centroid to
+// residual_ml) and fixes the caps (outlet, inlet), the fixed region or a base patch.
+// Prestress is applied later by run_cystometry (it needs the material).
+WallModel load_wall(const std::filesystem::path& path, const WallOptions& options);
+
+struct CystometryProtocol {
+  // Filling (physics.md §7)
+  double start_ml = 50.0;
+  double capacity_ml = 350.0;
+  double fill_rate_ml_min = 50.0;
+  double hold_s = 0.0;
+  double pabd_cmh2o = 0.0;  // resting abdominal pressure on the outer wall
+  // Voiding (physics.md §5): p_ves - p_open = R1 Q + R2 Q² for p_ves > p_open, else Q = 0
+  bool void_after_fill = true;
+  double p_open_cmh2o = 20.0;
+  double r1_cmh2o_s_per_ml = 0.2;
+  double r2_cmh2o_s2_per_ml2 = 0.05;
+  double detrusor_kpa = 0.0;       // peak active fiber stress T_a
+  double straining_kpa = 0.0;      // extra abdominal pressure while voiding
+  double activation_ramp_s = 2.0;  // ramp of detrusor activation and straining
+  double stop_flow_ml_s = 1.0;     // voiding ends when the flow falls below this
+  double max_void_s = 120.0;
+  // Environment
+  Posture posture = Posture::Supine;
+  bool gravity = true;              // hydrostatic urine pressure and wall weight
+  double urine_density = 1000.0;    // kg/m³
+  double wall_density = 920.0;      // kg/m³
+  double support_kpa_per_mm = 0.0;  // springs on the support region (kPa per mm)
+  // Prestress reference: the imaged geometry is in equilibrium at this pressure.
+  double image_pressure_cmh2o = 10.0;
+};
+
+struct RunOptions {
+  std::filesystem::path output_dir;  // empty: write no files (calibration)
+  bool filling_only = false;         // stop at capacity (and hold)
+  bool write_series = true;          // series.pvd + series/*.vtu when output_dir is set
+  double series_interval_s = 10.0;   // during filling; voiding frames every 1 s
+  double max_fill_step_ml = 10.0;    // largest volume increment of a filling step
+  double max_void_step_s = 0.5;
+  int threads = 2;
+  ReferenceState reference = ReferenceState::Scale;
+  NewtonOptions newton;
+};
+
+struct HistoryRow {
+  double time_s = 0.0;
+  double infused_ml = 0.0;
+  double volume_ml = 0.0;
+  double pves_cmh2o = 0.0;
+  double pabd_cmh2o = 0.0;
+  double pdet_cmh2o = 0.0;
+  double flow_ml_s = 0.0;
+  double voided_ml = 0.0;
+};
+
+struct CystometryResult {
+  std::vector<HistoryRow> history;
+  nlohmann::json summary;  // the keys of summary.json
+  bool completed = false;  // false: a step failed after cut-backs; see failure
+  std::string failure;     // "step failed at t = .. s, V = .. ml: <reason>"
+};
+
+// Throws vesica::Error (usage) for an invalid protocol or one above the geometry's
+// limits, before computing anything. A step that fails after cut-backs does not throw:
+// the result holds the history so far, completed = false and the reason (and files
+// written so far when output_dir is set).
+CystometryResult run_cystometry(const WallModel& wall, const MaterialSpec& material,
+                                const CystometryProtocol& protocol, const RunOptions& options);
+
+// history.csv text: time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,
+// flow_ml_s,voided_ml
+std::string history_csv(const std::vector<HistoryRow>& history);
+
+}  // namespace vesica::simulate

@@ -1,0 +1,51 @@
+#pragma once
+// The constitutive interface shared by every wall material (physics.md §2): a 3-D law
+// S(C) with its tangent, evaluated at one Gauss point. The membrane element enforces
+// plane stress on top of it (PlaneStress.h), so a material never knows it is a membrane.
+// Materials are built by name from a MaterialSpec through the registry
+// (MaterialRegistry.h); there is no switch over material kinds anywhere.
+#include <array>
+#include <cstddef>
+#include <map>
+#include <string>
+
+#include <Eigen/Dense>
+
+#include "vesica/simulate/Voigt.h"
+
+namespace vesica::simulate {
+
+// What a material may need about its point besides C.
+struct MaterialPoint {
+  // Unit fiber directions of the two families in the element's reference frame
+  // (e1, e2, n0); in-plane, perpendicular.
+  std::array<Eigen::Vector3d, 2> fibers{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
+  double dt_s = 0.0;  // time step of the current increment (viscoelastic update)
+  // Active fiber stress T_a(t) of the detrusor (Pa), set by the protocol's activation
+  // curve; zero for a passive wall.
+  double active_stress_pa = 0.0;
+};
+
+class Material {
+ public:
+  virtual ~Material() = default;
+
+  // Number of history doubles a Gauss point stores (viscoelastic branches).
+  virtual std::size_t history_size() const { return 0; }
+
+  // C: right Cauchy-Green tensor (3x3, symmetric). history_old: committed state of the
+  // point (history_size() doubles), history_new: written with the state that belongs to
+  // this C. Outputs: S second Piola-Kirchhoff stress (Pa) and D = 2 dS/dC (Pa, Voigt).
+  virtual void evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point,
+                        const double* history_old, double* history_new, Eigen::Matrix3d& S,
+                        Voigt6& D) const = 0;
+};
+
+// A material chosen by name with its parameters, as written in the pipeline file
+// (SI units: Pa, s; e.g. {"neo-hookean", {{"mu", 5e3}, {"K", 1e4}}}).
+struct MaterialSpec {
+  std::string name = "neo-hookean";
+  std::map<std::string, double> params;
+};
+
+}  // namespace vesica::simulate

@@ -1,0 +1,64 @@
+#pragma once
+// Newton-Raphson for one load/time step of the wall with its cavity (physics.md §3-4).
+// Unknowns: free wall displacements u and the cavity pressure p0. The one scalar cavity
+// equation c(u, p0) = 0 is either pressure control (c = p0 - P) or volume control
+//   c = V(u) - V_base + θ Δt Q_out(p0)
+// (V_base = V_n + Δt Q_in - (1-θ) Δt Q_out,n). The bordered system
+//   [K  ∂r/∂p0; ∂c/∂u  ∂c/∂p0] [Δu; Δp0] = -[r; c]
+// is solved by its Schur complement with one LU factorization of K (UMFPACK; K may be
+// indefinite past the limit point): Δu = u_r + Δp0 u_p, u_r = -K⁻¹ r, u_p = -K⁻¹ ∂r/∂p0.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "vesica/simulate/MembraneProblem.h"
+
+namespace vesica::simulate {
+
+struct CavityEquation {
+  bool volume_control = false;
+  double pressure_pa = 0.0;     // pressure control: the prescribed p0
+  double volume_base_m3 = 0.0;  // volume control: V_base
+  // θ Δt Q_out(p0) (m³) and its derivative (m³/Pa); empty = no outflow.
+  std::function<double(double p0, double& derivative)> outflow;
+};
+
+struct NewtonOptions {
+  int max_iterations = 25;
+  double residual_tolerance = 1e-9;   // |r| / force scale
+  double increment_tolerance = 1e-8;  // |Δu|∞ / model size
+  double volume_tolerance = 1e-12;    // |c| / V
+};
+
+struct NewtonReport {
+  bool converged = false;
+  int iterations = 0;
+  std::vector<double> residual_norms;  // relative, one per iteration (quadratic convergence)
+  std::string failure;                 // why it did not converge
+};
+
+class NewtonSolver {
+ public:
+  explicit NewtonSolver(MembraneProblem& problem, NewtonOptions options = {});
+
+  // Solves for x and loads.inside.p0 starting from their current values. On failure the
+  // caller restores its saved state (x, p0) and cuts the step back.
+  NewtonReport solve(const CavityEquation& cavity, WallLoads& loads,
+                     std::vector<Eigen::Vector3d>& x);
+
+  // The state of the last converged solve (volume, reactions at the fixed dofs).
+  const WallAssembly& assembly() const { return assembly_; }
+
+ private:
+  MembraneProblem& problem_;
+  NewtonOptions options_;
+  WallAssembly assembly_;
+  struct Factorization;
+  std::shared_ptr<Factorization> lu_;
+  double size_ = 1.0;
+};
+
+}  // namespace vesica::simulate

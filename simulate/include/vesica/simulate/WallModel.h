@@ -1,0 +1,46 @@
+#pragma once
+// The bladder wall as the FEM sees it: a closed, outward-oriented triangle surface in
+// SI units with region tags (core/Regions.h), reference thickness and fiber directions.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace vesica::simulate {
+
+struct WallModel {
+  std::vector<Eigen::Vector3d> nodes;                  // reference positions (m)
+  std::vector<std::array<int, 3>> triangles;           // outward-oriented
+  std::vector<int> region;                             // Regions.h code per triangle
+  std::vector<double> thickness;                       // reference thickness H (m) per triangle
+  std::vector<std::array<Eigen::Vector3d, 2>> fibers;  // per triangle (unit, may be empty)
+  // Per node and direction: held fixed (outlet/inlet caps, fixed region, or set by the
+  // caller). Derived from the regions by fix_regions().
+  std::vector<std::array<bool, 3>> fixed;
+  std::vector<bool> support;  // node belongs to the elastic support region
+
+  std::size_t node_count() const { return nodes.size(); }
+  std::size_t triangle_count() const { return triangles.size(); }
+};
+
+// Enclosed volume (1/6) Σ x1·(x2×x3) of the surface at positions x (m³).
+double enclosed_volume(const WallModel& wall, const std::vector<Eigen::Vector3d>& x);
+// Area-weighted centroid of the surface (m).
+Eigen::Vector3d surface_centroid(const WallModel& wall);
+
+// Marks the nodes of outlet, inlet and fixed triangles fixed and support nodes elastic.
+// When nothing is fixed, holds the patch of nodes within patch_radius_m of the lowest
+// node along `down` so that the model has no rigid-body motion; returns how many nodes
+// were fixed.
+std::size_t fix_regions(WallModel& wall, const Eigen::Vector3d& down, double patch_radius_m);
+
+// Scales the reference surface about its centroid so that it encloses volume_m3 (the
+// stress-free residual bladder, physics.md §7 / issue 7).
+void scale_to_volume(WallModel& wall, double volume_m3);
+
+// Throws vesica::Error naming `source` when the surface is not closed and manifold
+// (every edge in exactly two triangles, opposite orientation) or encloses no volume.
+void check_closed_surface(const WallModel& wall, const std::string& source);
+
+}  // namespace vesica::simulate

@@ -1,0 +1,176 @@
+#include "CavityRun.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "vesica/core/Regions.h"
+#include "vesica/core/Units.h"
+
+namespace vesica::simulate {
+namespace {
+
+// Where p0 (= Pves) is measured: the bladder neck (outlet patch centroid), else the
+// lowest point of the wall.
+Eigen::Vector3d pressure_reference_point(const WallModel& wall, const Eigen::Vector3d& g) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (std::size_t e = 0; e < wall.triangle_count(); ++e)
+    if (wall.region[e] == static_cast<int>(Region::Outlet))
+      for (int n : wall.triangles[e]) sum += wall.nodes[n], ++count;
+  if (count > 0) return sum / count;
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < wall.node_count(); ++i)
+    if (wall.nodes[i].dot(g) > wall.nodes[lowest].dot(g)) lowest = i;
+  return g.norm() > 0.0 ? wall.nodes[lowest] : surface_centroid(wall);
+}
+
+double ramp(double t, double duration) {
+  if (t <= 0.0) return 0.0;
+  return duration > 0.0 ? std::min(1.0, t / duration) : 1.0;
+}
+
+}  // namespace
+
+CavityRun::CavityRun(const WallModel& wall, const Material& material,
+                     const CystometryProtocol& protocol, const RunOptions& options)
+    : wall_(wall),
+      protocol_(protocol),
+      problem_(wall, material, options.threads),
+      solver_(problem_, options.newton),
+      x_(wall.nodes) {
+  const Eigen::Vector3d g =
+      protocol.gravity ? gravity_lps(protocol.posture) : Eigen::Vector3d::Zero();
+  loads_.inside.rho = protocol.urine_density;
+  loads_.inside.gravity = g;
+  loads_.inside.x_ref = pressure_reference_point(wall, g);
+  loads_.wall_gravity = g;
+  loads_.wall_density = protocol.wall_density;
+  loads_.support_stiffness = protocol.support_kpa_per_mm * 1e3 / 1e-3;  // kPa/mm → Pa/m
+  set_time_loads(0.0);
+  volume_ = V_reference_ = enclosed_volume(wall, x_);
+}
+
+void CavityRun::set_time_loads(double t) {
+  const double active = t_void_ >= 0.0 ? ramp(t - t_void_, protocol_.activation_ramp_s) : 0.0;
+  loads_.outside_pa = units::pa_from_cmh2o(protocol_.pabd_cmh2o) +
+                      active * units::pa_from_kpa(protocol_.straining_kpa);
+  loads_.active_stress_pa = active * units::pa_from_kpa(protocol_.detrusor_kpa);
+}
+
+double CavityRun::outlet_flow(double p0, double& dQ_dp0) const {
+  // p - p_open = R1 Q + R2 Q² in cmH2O and ml/s; zero flow below the opening pressure.
+  const double dp = units::cmh2o_from_pa(p0) - protocol_.p_open_cmh2o;
+  if (dp <= 0.0) {
+    dQ_dp0 = 0.0;
+    return 0.0;
+  }
+  const double R1 = std::max(protocol_.r1_cmh2o_s_per_ml, 1e-6), R2 = protocol_.r2_cmh2o_s2_per_ml2;
+  const double Q = R2 > 0.0 ? 2.0 * dp / (R1 + std::sqrt(R1 * R1 + 4.0 * R2 * dp)) : dp / R1;
+  dQ_dp0 = units::m3s_from_mls(1.0 / (R1 + 2.0 * R2 * Q)) / units::kPaPerCmH2O;
+  return units::m3s_from_mls(Q);
+}
+
+bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_flow,
+                        int& iterations) {
+  const std::vector<Eigen::Vector3d> x_saved = x_;
+  const double p_saved = loads_.inside.p0;
+  set_time_loads(t_ + dt);
+  loads_.dt_s = dt;
+  CavityEquation cavity;
+  cavity.volume_control = true;
+  constexpr double theta = 0.5;  // trapezoidal outflow: second order, exact bookkeeping
+  cavity.volume_base_m3 = V_target_no_flow - (outlet ? (1.0 - theta) * dt * q_out_ : 0.0);
+  if (outlet)
+    cavity.outflow = [this, dt](double p0, double& d) {
+      const double Q = outlet_flow(p0, d);
+      d *= theta * dt;
+      return theta * dt * Q;
+    };
+  (void)q_in;
+  const NewtonReport report = solver_.solve(cavity, loads_, x_);
+  iterations = report.iterations;
+  if (!report.converged) {
+    x_ = x_saved;
+    loads_.inside.p0 = p_saved;
+    set_time_loads(t_);
+    last_failure_ = report.failure;
+    return false;
+  }
+  problem_.commit();
+  double dQ = 0.0;
+  const double q_new = outlet ? outlet_flow(loads_.inside.p0, dQ) : 0.0;
+  if (outlet) voided_ += dt * (theta * q_new + (1.0 - theta) * q_out_);
+  q_out_ = q_new;
+  volume_ = solver_.assembly().volume;
+  return true;
+}
+
+void CavityRun::step_to_volume(double V) {
+  int its = 0;
+  for (int cut = 0; cut <= 12; ++cut) {
+    const double target = volume_ + (V - volume_) / std::pow(2.0, cut);
+    if (attempt(0.0, 0.0, false, target, its)) {
+      ++steps_;
+      iterations_ += its;
+      max_iterations_ = std::max(max_iterations_, its);
+      if (cut > 0) {
+        cutbacks_ += cut;
+        step_to_volume(V);
+      }
+      return;
+    }
+  }
+  throw StepFailed("no equilibrium at " + std::to_string(units::ml_from_m3(V)) + " ml (" +
+                   last_failure_ + ")");
+}
+
+void CavityRun::start_clock() {
+  t_ = 0.0;
+  V0_ = volume_;
+  infused_ = voided_ = 0.0;
+}
+
+void CavityRun::begin_voiding() {
+  t_void_ = t_;
+  q_out_ = 0.0;
+}
+
+int CavityRun::step(double dt, double q_in, bool outlet) {
+  for (int cut = 0; cut <= 12; ++cut, dt *= 0.5) {
+    int its = 0;
+    const double V_target = V0_ + infused_ + dt * q_in - voided_;
+    if (attempt(dt, q_in, outlet, V_target, its)) {
+      t_ += dt;
+      infused_ += dt * q_in;
+      ++steps_;
+      iterations_ += its;
+      cutbacks_ += cut;
+      max_iterations_ = std::max(max_iterations_, its);
+      return its;
+    }
+  }
+  throw StepFailed(last_failure_ + " after 12 step cut-backs");
+}
+
+std::vector<MembraneStressOutput> CavityRun::stresses() const {
+  return problem_.element_outputs(x_, loads_);
+}
+
+nlohmann::json CavityRun::statistics() const {
+  return {{"steps", steps_},
+          {"iterations", iterations_},
+          {"cutbacks", cutbacks_},
+          {"max_iterations_per_step", max_iterations_},
+          {"mean_iterations_per_step", steps_ ? double(iterations_) / steps_ : 0.0}};
+}
+
+Eigen::Vector3d CavityRun::support_reaction() const {
+  Eigen::Vector3d R = Eigen::Vector3d::Zero();
+  const Eigen::VectorXd& r = solver_.assembly().full_residual;
+  for (std::size_t n = 0; n < wall_.node_count(); ++n)
+    for (int i = 0; i < 3; ++i)
+      if (problem_.dof_map()[3 * n + i] < 0) R(i) += r(3 * n + i);
+  return R;
+}
+
+}  // namespace vesica::simulate

@@ -1,0 +1,283 @@
+#include "vesica/simulate/Cystometry.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "CavityRun.h"
+#include "vesica/core/AtomicOutput.h"
+#include "vesica/core/Error.h"
+#include "vesica/core/Log.h"
+#include "vesica/core/Regions.h"
+#include "vesica/core/Units.h"
+#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/MeshReader.h"
+#include "vesica/simulate/PrestressReference.h"
+#include "vesica/simulate/VtuSeriesWriter.h"
+
+namespace vesica::simulate {
+namespace {
+
+// The largest stretch the protocol may ask of the reference wall (volume ratio λ³).
+constexpr double kMaxMeanStretch = 4.0;
+
+void validate(const CystometryProtocol& p, double reference_ml) {
+  auto require = [](bool ok, const std::string& what) {
+    if (!ok) usage_error("protocol: " + what);
+  };
+  require(p.fill_rate_ml_min > 0.0, "fill_rate_ml_min must be > 0");
+  require(p.start_ml > 0.0 && p.capacity_ml > p.start_ml, "need 0 < start_ml < capacity_ml");
+  require(p.hold_s >= 0.0, "hold_s must be >= 0");
+  require(p.r1_cmh2o_s_per_ml >= 0.0 && p.r2_cmh2o_s2_per_ml2 >= 0.0 &&
+              p.r1_cmh2o_s_per_ml + p.r2_cmh2o_s2_per_ml2 > 0.0,
+          "outlet resistances r1, r2 must be >= 0 and not both zero");
+  require(p.stop_flow_ml_s > 0.0 && p.max_void_s > 0.0,
+          "stop_flow_ml_s and max_void_s must be > 0");
+  const double limit_ml = reference_ml * std::pow(kMaxMeanStretch, 3);
+  std::ostringstream s;
+  s.precision(4);
+  s << "capacity_ml " << p.capacity_ml << " is above this geometry's limit of " << limit_ml
+    << " ml (mean wall stretch " << kMaxMeanStretch << " from the " << reference_ml
+    << " ml reference)";
+  require(p.capacity_ml <= limit_ml, s.str());
+  std::ostringstream t;
+  t << "start_ml " << p.start_ml << " is below half the " << reference_ml
+    << " ml stress-free reference volume";
+  require(p.start_ml >= 0.5 * reference_ml, t.str());
+}
+
+// Drives the run through its phases and keeps the records.
+class CystometryDriver {
+ public:
+  CystometryDriver(const WallModel& wall, const Material& material, const CystometryProtocol& p,
+                   const RunOptions& o)
+      : protocol_(p), options_(o), run_(wall, material, p, o) {
+    if (!o.output_dir.empty() && o.write_series)
+      series_ = std::make_unique<VtuSeriesWriter>(o.output_dir);
+  }
+
+  CystometryResult run() {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      settle();
+      fill();
+      if (protocol_.hold_s > 0.0) hold();
+      capacity_index_ = result_.history.size() - 1;
+      if (protocol_.void_after_fill && !options_.filling_only) void_bladder();
+      result_.completed = true;
+    } catch (const CavityRun::StepFailed& e) {
+      std::ostringstream s;
+      s.precision(6);
+      s << "step failed at t = " << run_.time() << " s, V = " << units::ml_from_m3(run_.volume())
+        << " ml: " << e.what();
+      result_.failure = s.str();
+      vesica::log()->error("{}", result_.failure);
+    }
+    frame(true);
+    if (series_) series_->finish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    summarize(seconds);
+    return std::move(result_);
+  }
+
+ private:
+  void record() {
+    HistoryRow row;
+    row.time_s = run_.time();
+    row.infused_ml = units::ml_from_m3(run_.infused());
+    row.volume_ml = units::ml_from_m3(run_.volume());
+    row.pves_cmh2o = units::cmh2o_from_pa(run_.pves());
+    row.pabd_cmh2o = units::cmh2o_from_pa(run_.pabd());
+    row.pdet_cmh2o = row.pves_cmh2o - row.pabd_cmh2o;
+    row.flow_ml_s = units::mls_from_m3s(run_.outflow());
+    row.voided_ml = units::ml_from_m3(run_.voided());
+    result_.history.push_back(row);
+    const double V_expected = run_.initial_volume() + run_.infused() - run_.voided();
+    mass_error_ = std::max(mass_error_, std::abs(run_.volume() - V_expected) / V_expected);
+    frame(false);
+  }
+
+  void frame(bool force) {
+    const double t = run_.time();
+    if (!force && t + 1e-9 < next_frame_) return;
+    const auto stresses = run_.stresses();
+    for (const auto& s : stresses) max_stress_ = std::max(max_stress_, s.sigma1);
+    if (series_ && (force ? last_frame_ < t : true))
+      series_->add_step(t, run_.wall(), run_.positions(), stresses);
+    last_frame_ = t;
+    next_frame_ = t + (voiding_ ? 1.0 : options_.series_interval_s);
+  }
+
+  // Gravity and the reference volume at t = 0, then up to the start volume.
+  void settle() {
+    run_.step_to_volume(run_.volume());
+    const double target = units::m3_from_ml(protocol_.start_ml);
+    const double dv = units::m3_from_ml(options_.max_fill_step_ml);
+    while (std::abs(run_.volume() - target) > 1e-12 * target) {
+      const double next = run_.volume() + std::clamp(target - run_.volume(), -dv, dv);
+      run_.step_to_volume(next);
+    }
+    run_.start_clock();
+    record();
+  }
+
+  void fill() {
+    const double q_in = units::m3s_from_ml_per_min(protocol_.fill_rate_ml_min);
+    const double target = units::m3_from_ml(protocol_.capacity_ml - protocol_.start_ml);
+    const double dt_max = units::m3_from_ml(options_.max_fill_step_ml) / q_in;
+    double dt = dt_max / 2;
+    while (run_.infused() < target * (1.0 - 1e-12)) {
+      dt = std::min(dt, (target - run_.infused()) / q_in);
+      const int its = run_.step(dt, q_in, false);
+      record();
+      dt = its <= 4 ? std::min(1.5 * dt, dt_max) : dt;
+    }
+  }
+
+  void hold() {
+    const double t_end = run_.time() + protocol_.hold_s;
+    double dt = std::min(protocol_.hold_s, 10.0);
+    while (run_.time() < t_end - 1e-9) {
+      dt = std::min(dt, t_end - run_.time());
+      run_.step(dt, 0.0, false);
+      record();
+    }
+  }
+
+  void void_bladder() {
+    voiding_ = true;
+    next_frame_ = run_.time();
+    run_.begin_voiding();
+    const double t0 = run_.time();
+    double dt = 0.1;
+    bool flowing = false;
+    const double stop = units::m3s_from_mls(protocol_.stop_flow_ml_s);
+    while (run_.time() - t0 < protocol_.max_void_s) {
+      const double V_before = run_.volume();
+      run_.step(dt, 0.0, true);
+      record();
+      const double Q = run_.outflow();
+      if (Q >= stop) flowing = true;
+      if (flowing && Q < stop) break;
+      if (run_.volume() < units::m3_from_ml(1.0)) break;
+      // Aim at about 2 ml per step while urine flows, larger steps while it does not.
+      const double dV = std::abs(V_before - run_.volume());
+      const double aim = units::m3_from_ml(2.0);
+      dt = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, 2.0 * dt) : 2.0 * dt;
+      dt = std::min(dt, options_.max_void_step_s);
+    }
+  }
+
+  void summarize(double seconds) {
+    nlohmann::json& s = result_.summary;
+    const auto& h = result_.history;
+    s["completed"] = result_.completed;
+    if (!result_.completed) s["failure"] = result_.failure;
+    s["triangles"] = run_.wall().triangle_count();
+    s["nodes"] = run_.wall().node_count();
+    s["reference_volume_ml"] = units::ml_from_m3(run_.initial_reference_volume());
+    if (!h.empty()) {
+      const HistoryRow& first = h.front();
+      const HistoryRow& cap = h[std::min(capacity_index_, h.size() - 1)];
+      s["capacity_ml"] = cap.volume_ml;
+      s["pdet_at_capacity_cmh2o"] = cap.pdet_cmh2o;
+      s["pves_at_capacity_cmh2o"] = cap.pves_cmh2o;
+      const double dp = cap.pdet_cmh2o - first.pdet_cmh2o;
+      s["compliance_ml_per_cmh2o"] =
+          dp > 0.0 ? nlohmann::json((cap.volume_ml - first.volume_ml) / dp) : nlohmann::json();
+      double qmax = 0.0, pdet_qmax = 0.0, t_qmax = 0.0, pdet_max = 0.0, flow_time = 0.0;
+      for (std::size_t i = capacity_index_ + 1; i < h.size(); ++i) {
+        if (h[i].flow_ml_s > qmax) {
+          qmax = h[i].flow_ml_s;
+          pdet_qmax = h[i].pdet_cmh2o;
+          t_qmax = h[i].time_s - cap.time_s;
+        }
+        pdet_max = std::max(pdet_max, h[i].pdet_cmh2o);
+        if (h[i].flow_ml_s > 0.0) flow_time += h[i].time_s - h[i - 1].time_s;
+      }
+      const HistoryRow& last = h.back();
+      const bool voided = h.size() > capacity_index_ + 1;
+      s["voided_ml"] = last.voided_ml;
+      s["qmax_ml_s"] = qmax;
+      if (voided) {
+        s["pvr_ml"] = last.volume_ml;
+        s["pdet_at_qmax_cmh2o"] = pdet_qmax;
+        s["pdet_max_voiding_cmh2o"] = pdet_max;
+        s["time_to_qmax_s"] = t_qmax;
+        s["flow_time_s"] = flow_time;
+        s["voiding_time_s"] = last.time_s - cap.time_s;
+        s["qave_ml_s"] = flow_time > 0.0 ? last.voided_ml / flow_time : 0.0;
+        const double total = last.voided_ml + last.volume_ml;
+        s["voiding_efficiency"] = total > 0.0 ? last.voided_ml / total : 0.0;
+        s["booi"] = pdet_qmax - 2.0 * qmax;
+        s["bci"] = pdet_qmax + 5.0 * qmax;
+      }
+    }
+    s["max_wall_stress_kpa"] = units::kpa_from_pa(max_stress_);
+    s["mass_balance_error_max_rel"] = mass_error_;
+    s["newton"] = run_.statistics();
+    s["compute_s"] = seconds;
+    s["outlet"] = {{"p_open_cmh2o", protocol_.p_open_cmh2o},
+                   {"r1_cmh2o_s_per_ml", protocol_.r1_cmh2o_s_per_ml},
+                   {"r2_cmh2o_s2_per_ml2", protocol_.r2_cmh2o_s2_per_ml2}};
+  }
+
+  const CystometryProtocol& protocol_;
+  const RunOptions& options_;
+  CavityRun run_;
+  std::unique_ptr<VtuSeriesWriter> series_;
+  CystometryResult result_;
+  std::size_t capacity_index_ = 0;
+  double mass_error_ = 0.0, max_stress_ = 0.0;
+  double next_frame_ = 0.0, last_frame_ = -1.0;
+  bool voiding_ = false;
+};
+
+}  // namespace
+
+Eigen::Vector3d gravity_lps(Posture posture) {
+  return posture == Posture::Supine ? Eigen::Vector3d(0.0, units::kStandardGravity, 0.0)
+                                    : Eigen::Vector3d(0.0, 0.0, -units::kStandardGravity);
+}
+
+WallModel load_wall(const std::filesystem::path& path, const WallOptions& options) {
+  if (!(options.thickness_mm > 0.0)) usage_error("thickness_mm must be > 0");
+  WallModel wall = read_wall(path, units::m_from_mm(options.thickness_mm));
+  if (options.reference == ReferenceState::Scale) {
+    if (!(options.residual_ml > 0.0)) usage_error("residual_ml must be > 0");
+    scale_to_volume(wall, units::m3_from_ml(options.residual_ml));
+  }
+  const Eigen::Vector3d down = gravity_lps(options.posture).normalized();
+  fix_regions(wall, down, units::m_from_mm(options.fixed_patch_radius_mm));
+  return wall;
+}
+
+CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec& spec,
+                                const CystometryProtocol& protocol, const RunOptions& options) {
+  const std::unique_ptr<Material> material = make_material(spec);
+  WallModel wall = given_wall;
+  if (options.reference == ReferenceState::Prestress)
+    wall = prestressed_reference(
+        wall, *material, units::pa_from_cmh2o(protocol.image_pressure_cmh2o), options.threads);
+  validate(protocol, units::ml_from_m3(enclosed_volume(wall, wall.nodes)));
+  CystometryDriver driver(wall, *material, protocol, options);
+  CystometryResult result = driver.run();
+  if (!options.output_dir.empty())
+    write_text_atomically(options.output_dir / "history.csv", history_csv(result.history));
+  return result;
+}
+
+std::string history_csv(const std::vector<HistoryRow>& history) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml\n";
+  for (const HistoryRow& r : history)
+    s << r.time_s << ',' << r.infused_ml << ',' << r.volume_ml << ',' << r.pves_cmh2o << ','
+      << r.pabd_cmh2o << ',' << r.pdet_cmh2o << ',' << r.flow_ml_s << ',' << r.voided_ml << '\n';
+  return s.str();
+}
+
+}  // namespace vesica::simulate

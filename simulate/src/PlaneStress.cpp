@@ -1,0 +1,61 @@
+#include "vesica/simulate/PlaneStress.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace vesica::simulate {
+namespace {
+constexpr int kPlane[3] = {0, 1, 3};  // Voigt positions of 11, 22, 12
+constexpr int k33 = 2;
+}  // namespace
+
+// S33(C33) → -∞ as C33 → 0 (the volumetric term) and is positive for a large C33, so
+// a root is bracketed; Newton steps are taken inside the bracket and replaced by
+// bisection when they leave it (the Ogden term makes S33 non-monotonic far from the
+// root, where a plain Newton iteration could run away).
+PlaneStressState plane_stress(const Material& material, const Eigen::Matrix2d& C2,
+                              const MaterialPoint& point, double C33_guess,
+                              const double* history_old, double* history_new) {
+  const double det2 = C2.determinant();
+  if (!(det2 > 0.0)) throw std::runtime_error("plane stress: inverted element");
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  C.topLeftCorner<2, 2>() = C2;
+  Eigen::Matrix3d S;
+  Voigt6 D;
+  auto S33 = [&](double c33) {
+    C(2, 2) = c33;
+    material.evaluate(C, point, history_old, history_new, S, D);
+    return S(2, 2);
+  };
+  double c33 = C33_guess > 0.0 ? C33_guess : 1.0 / det2;
+  double f = S33(c33);
+  const double stress_scale = std::abs(S(0, 0)) + std::abs(S(1, 1)) + std::abs(S(0, 1));
+  const double tolerance = 1e-13 * stress_scale;
+  if (std::abs(f) > tolerance) {
+    double lo = 0.0, hi = INFINITY;
+    (f > 0.0 ? hi : lo) = c33;
+    bool done = false;
+    for (int it = 0; it < 200 && !done; ++it) {
+      const double slope = 0.5 * D(k33, k33);  // dS33/dC33 (D = 2 dS/dC)
+      double next = slope > 0.0 ? c33 - f / slope : NAN;
+      if (!(next > lo && next < hi))
+        next = std::isfinite(hi) ? (lo > 0.0 ? 0.5 * (lo + hi) : 0.5 * hi) : 2.0 * c33;
+      const double step = next - c33;
+      c33 = next;
+      f = S33(c33);
+      (f > 0.0 ? hi : lo) = c33;
+      done = std::abs(f) <= tolerance || std::abs(step) <= 1e-15 * c33;
+      if (!std::isfinite(f)) break;
+    }
+    if (!done) throw std::runtime_error("plane stress: thickness iteration did not converge");
+  }
+  PlaneStressState state;
+  state.C33 = c33;
+  state.S = S.topLeftCorner<2, 2>();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      state.D(i, j) = D(kPlane[i], kPlane[j]) - D(kPlane[i], k33) * D(k33, kPlane[j]) / D(k33, k33);
+  return state;
+}
+
+}  // namespace vesica::simulate

@@ -1,0 +1,34 @@
+// Ogden volumetric term and the shared decoupled kinematics (physics.md §2).
+#include <cmath>
+
+#include "vesica/simulate/DecoupledParts.h"
+
+namespace vesica::simulate {
+
+Kinematics::Kinematics(const Eigen::Matrix3d& C_) : C(C_) {
+  C_inv = C.inverse();
+  J = std::sqrt(C.determinant());
+  J_m23 = std::pow(J, -2.0 / 3.0);
+}
+
+IsochoricInvariant isochoric_invariant(const Kinematics& k, const Eigen::Matrix3d& M) {
+  IsochoricInvariant inv;
+  inv.value = k.J_m23 * (k.C.cwiseProduct(M)).sum();
+  inv.d_dC = k.J_m23 * M - inv.value / 3.0 * k.C_inv;
+  inv.d2_dC2 = -(outer(inv.d_dC, k.C_inv) + outer(k.C_inv, inv.d_dC)) / 3.0 -
+               inv.value / 9.0 * outer(k.C_inv, k.C_inv) + inv.value / 3.0 * odot(k.C_inv);
+  return inv;
+}
+
+double OgdenVolumetric::dPsi_vol_dJ(double J) const {
+  return K_ / beta_ * (1.0 - std::pow(J, -beta_)) / J;
+}
+
+void OgdenVolumetric::S_vol(const Kinematics& k, Eigen::Matrix3d& S, Voigt6& D) const {
+  const double J_mb = std::pow(k.J, -beta_);
+  const double f = K_ / beta_ * (1.0 - J_mb);  // J dΨ_vol/dJ
+  S = f * k.C_inv;
+  D = K_ * J_mb * outer(k.C_inv, k.C_inv) - 2.0 * f * odot(k.C_inv);
+}
+
+}  // namespace vesica::simulate
