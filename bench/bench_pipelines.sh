@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Times a no-op `vesica run` (every stage fresh): the runner must decide from manifests,
 # file sizes and mtimes alone, without hashing or spawning anything. Target: < 0.2 s.
-# Uses a six-stage chain of the test stage (with folder outputs); when BUILD/demo holds a
+# Uses a six-stage chain of the test stage (folder outputs, 16 MB of data per stage); when BUILD/demo holds a
 # finished run of pipelines/demo.yaml, times that too. Prints one JSON object.
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
@@ -12,11 +12,16 @@ vesica="$build/bin/vesica"
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# A 16 MB "DICOM series" (32 files) flows through every stage, so hashing anything on a
+# no-op run would show in the figure.
+mkdir -p "$work/ct"
+for i in $(seq -w 1 32); do head -c 524288 /dev/urandom > "$work/ct/slice$i.dcm"; done
 cat > "$work/bench.yaml" <<'YAML'
 pipeline: bench
 workdir: out
+inputs: {ct: ct}
 stages:
-  phantom:  {tool: teststage, output: phantom/dicom, params: {label: P, dir: true}}
+  phantom:  {tool: teststage, input: '${inputs.ct}', output: phantom/dicom, params: {label: P, dir: true}}
   segment:  {tool: teststage, input: phantom/dicom, output: bladder.nii.gz, params: {label: S}}
   surface:  {tool: teststage, input: bladder.nii.gz, output: bladder.vtp, params: {label: F}}
   mesh:     {tool: teststage, input: bladder.vtp, output: bladder.msh, params: {label: M}}
@@ -46,5 +51,5 @@ demo=null
 if [ -f "$build/demo/report/index.html" ]; then
   demo=$(best_of_five "$vesica" run "$here/pipelines/demo.yaml" --workdir "$build/demo" --json)
 fi
-printf '{"noop_run_s": %s, "noop_stages": 6, "noop_ran": %s, "demo_noop_run_s": %s, "target_s": 0.2}\n' \
+printf '{"noop_run_s": %s, "noop_stages": 6, "noop_mb_per_stage": 16, "noop_ran": %s, "demo_noop_run_s": %s, "target_s": 0.2}\n' \
   "$noop" "$ran" "$demo"

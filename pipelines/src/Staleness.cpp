@@ -51,15 +51,26 @@ std::string shown(const std::string& value) {
 
 // vesica_core 0.1 sums folder stamps with max(0, mtime) while libstdc++'s file_clock
 // counts from an epoch after today, so a folder's recorded mtime is just a small count and
-// an edit that keeps the folder's size would go unnoticed: such stamps are not trusted and
-// the folder is hashed. A real mtime in ns is far larger in magnitude.
+// cannot tell an edit that keeps the folder's size. A real mtime in ns is far larger.
 bool stamp_is_trustworthy(const FileRecord& r) {
   return r.mtime_ns > 1'000'000'000'000LL || r.mtime_ns < -1'000'000'000'000LL;
 }
 
+// For such folders: nothing inside (files, subfolders, the folder itself) was modified
+// after the manifest was written, which happens after the stage wrote its outputs.
+bool folder_untouched_since(const fs::path& dir, fs::file_time_type manifest_time) {
+  std::error_code ec;
+  if (fs::last_write_time(dir, ec) > manifest_time || ec) return false;
+  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+    if (e.last_write_time(ec) > manifest_time || ec) return false;
+  return !ec;
+}
+
 // Checks a recorded file against the disk: "" when unchanged, else what happened.
-// The recorded hash is trusted while size and mtime are unchanged.
-std::string compare_file(const fs::path& path, const FileRecord& recorded) {
+// The recorded hash is trusted while size and mtime are unchanged (for folders with an
+// unusable recorded mtime: while nothing inside is newer than the manifest).
+std::string compare_file(const fs::path& path, const FileRecord& recorded,
+                         fs::file_time_type manifest_time) {
   std::error_code ec;
   if (!fs::exists(path, ec)) return "missing";
   FileStamp now;
@@ -68,9 +79,12 @@ std::string compare_file(const fs::path& path, const FileRecord& recorded) {
   } catch (const std::exception&) {
     return "unreadable";
   }
-  if (now.size == recorded.size && now.mtime_ns == recorded.mtime_ns &&
-      stamp_is_trustworthy(recorded))
-    return "";
+  if (now.size == recorded.size) {
+    if (stamp_is_trustworthy(recorded) && now.mtime_ns == recorded.mtime_ns) return "";
+    if (!stamp_is_trustworthy(recorded) && fs::is_directory(path, ec) &&
+        folder_untouched_since(path, manifest_time))
+      return "";
+  }
   try {
     return content_hash(path) == recorded.hash ? "" : "changed";
   } catch (const std::exception&) {
@@ -119,11 +133,14 @@ std::string describe_invocation_change(const std::vector<std::string>& before,
 
 StageStatus assess_stage(const Plan& plan, std::size_t index) {
   const PlannedStage& s = plan.stages[index];
-  std::ifstream in(plan.in_workdir(s.manifest));
+  const fs::path manifest_path = plan.in_workdir(s.manifest);
+  std::ifstream in(manifest_path);
   if (!in) return {Freshness::Missing, "not run yet (no manifest " + s.manifest + ")"};
   nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
   if (m.is_discarded() || !m.is_object())
     return {Freshness::Stale, "manifest " + s.manifest + " is unreadable"};
+  std::error_code ec;
+  const fs::file_time_type manifest_time = fs::last_write_time(manifest_path, ec);
   const std::string recorded_version = m.value("version", "");
   if (recorded_version != vesica::version())
     return {Freshness::Stale,
@@ -133,7 +150,7 @@ StageStatus assess_stage(const Plan& plan, std::size_t index) {
     return {Freshness::Stale, describe_invocation_change(invocation, s.argv)};
   for (const auto& j : m.value("inputs", nlohmann::json::array())) {
     const FileRecord r = file_record_from_json(j);
-    const std::string what = compare_file(plan.in_workdir(r.path), r);
+    const std::string what = compare_file(plan.in_workdir(r.path), r, manifest_time);
     if (what.empty()) continue;
     std::string reason = "input " + r.path + " " + what;
     const long producer = plan.producer_of(r.path);
@@ -142,7 +159,7 @@ StageStatus assess_stage(const Plan& plan, std::size_t index) {
   }
   for (const auto& j : m.value("outputs", nlohmann::json::array())) {
     const FileRecord r = file_record_from_json(j);
-    const std::string what = compare_file(plan.in_workdir(r.path), r);
+    const std::string what = compare_file(plan.in_workdir(r.path), r, manifest_time);
     if (what == "missing") return {Freshness::Stale, "output " + r.path + " is missing"};
     if (!what.empty()) return {Freshness::Stale, "output " + r.path + " was edited"};
   }
