@@ -12,6 +12,7 @@
 #include <limits>
 #include <tuple>
 
+#include "SurfaceTestSupport.h"
 #include "TestData.h"
 #include "vesica/core/Regions.h"
 #include "vesica/surface/Shapes.h"
@@ -97,6 +98,12 @@ TEST_P(RoundTrip, KeepsCountsConnectivityVolumeAndTags) {
   EXPECT_NEAR(surface::enclosed_volume(back.V, back.F) / volume, 1.0,
               stored == Stored::FloatText ? 1e-6 : 1e-12);
   EXPECT_TRUE(back.region == original.region) << "region tags changed";
+  if (stored == Stored::Doubles) {
+    EXPECT_EQ(vtp_region_array_class(path.string()), "vtkIntArray/32");
+    EXPECT_EQ(vtp_units(path.string()), "mm");
+  } else {
+    EXPECT_TRUE(std::filesystem::exists(surface::regions_sidecar_path(path)));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(SurfaceFormats, RoundTrip,

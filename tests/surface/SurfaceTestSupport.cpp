@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkGenericCell.h>
 #include <vtkPolyData.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
 
 #include "vesica/surface/VtkConversion.h"
 
@@ -37,6 +42,29 @@ Eigen::MatrixXd surface_samples(const surface::TriangleSurface& s) {
     samples.row(s.V.rows() + f) =
         (s.V.row(s.F(f, 0)) + s.V.row(s.F(f, 1)) + s.V.row(s.F(f, 2))) / 3.0;
   return samples;
+}
+
+namespace {
+vtkSmartPointer<vtkPolyData> read_vtp(const std::string& path) {
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  return reader->GetOutput();
+}
+}  // namespace
+
+std::string vtp_region_array_class(const std::string& path) {
+  auto poly = read_vtp(path);
+  vtkDataArray* region = poly->GetCellData()->GetArray("region");
+  return region ? std::string(region->GetClassName()) + "/" +
+                      std::to_string(region->GetDataTypeSize() * 8)
+                : "";
+}
+
+std::string vtp_units(const std::string& path) {
+  auto poly = read_vtp(path);
+  auto* units = vtkStringArray::SafeDownCast(poly->GetFieldData()->GetAbstractArray("units"));
+  return units && units->GetNumberOfValues() ? units->GetValue(0) : "";
 }
 
 surface::TriangleSurface run_stage(const surface::SurfaceStageOptions& options,

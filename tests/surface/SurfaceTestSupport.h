@@ -18,6 +18,11 @@ double max_distance_to_triangles(const Eigen::MatrixXd& points, const Eigen::Mat
 // Vertices and triangle centroids: the sample of a surface used for distances from it.
 Eigen::MatrixXd surface_samples(const surface::TriangleSurface& s);
 
+// A VTP file's "region" cell array type name ("vtkIntArray" for Int32) and its field data
+// "units" value ("" when missing).
+std::string vtp_region_array_class(const std::string& path);
+std::string vtp_units(const std::string& path);
+
 // Runs the stage as the executable would, with a throw-away record.
 surface::TriangleSurface run_stage(const surface::SurfaceStageOptions& options,
                                    nlohmann::json* summary = nullptr);
