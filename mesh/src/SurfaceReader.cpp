@@ -7,6 +7,7 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
@@ -20,6 +21,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "vesica/core/Error.h"
 #include "vesica/core/Regions.h"
@@ -67,6 +71,32 @@ int region_code(double value, const std::string& origin) {
     if (static_cast<int>(r) == code && code == value) return code;
   fail(origin, "unknown region code " + std::to_string(value) + " in cell array 'region'",
        "codes are wall=1, outlet=2, inlet=3, fixed=4, support=5");
+}
+
+// STL/PLY/OBJ carry no cell data; vesica-surface writes their tags beside them in
+// "<file>.regions.json" ({"region": [one code per triangle, in file order]}).
+void attach_sidecar_regions(vtkPolyData* polydata, const std::filesystem::path& path) {
+  const std::filesystem::path sidecar = path.string() + ".regions.json";
+  if (!std::filesystem::exists(sidecar)) return;
+  nlohmann::json j;
+  try {
+    std::ifstream in(sidecar);
+    j = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    fail(sidecar.string(), std::string("not valid JSON: ") + e.what());
+  }
+  if (!j.contains("region") || !j["region"].is_array()) fail(sidecar.string(), "no array 'region'");
+  const auto& tags = j["region"];
+  if (static_cast<vtkIdType>(tags.size()) != polydata->GetNumberOfPolys() ||
+      polydata->GetNumberOfCells() != polydata->GetNumberOfPolys())
+    fail(sidecar.string(),
+         std::to_string(tags.size()) + " region tags for " +
+             std::to_string(polydata->GetNumberOfPolys()) + " triangles",
+         "was the surface edited after vesica-surface wrote it?");
+  vtkNew<vtkIntArray> region;
+  region->SetName("region");
+  for (const auto& tag : tags) region->InsertNextValue(tag.get<int>());
+  polydata->GetCellData()->AddArray(region);
 }
 
 }  // namespace
@@ -119,6 +149,7 @@ SurfaceMesh surface_from_polydata(vtkPolyData* input, const std::string& origin)
 SurfaceMesh read_surface(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path)) fail(path.string(), "file not found");
   vtkSmartPointer<vtkPolyData> polydata = read_polydata(path);
+  if (lower_extension(path) != ".vtp") attach_sidecar_regions(polydata, path);
   return surface_from_polydata(polydata, path.string());
 }
 
