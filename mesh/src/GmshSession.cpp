@@ -12,7 +12,7 @@ GmshSession::GmshSession() {
   // readConfigFiles=false: a user's ~/.gmshrc must not change our meshes.
   gmsh::initialize(0, nullptr, false);
   gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::option::setNumber("General.Verbosity", 5);
+  gmsh::option::setNumber("General.Verbosity", 4);
   gmsh::logger::start();
 }
 

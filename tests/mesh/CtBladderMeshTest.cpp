@@ -35,7 +35,7 @@ TEST(CtBladderMesh, NeobladderScale) {
   VESICA_REQUIRE_SHARED(label, kLabel);
   const SurfaceMesh surface = test::ct_bladder_surface(label, 17000);
   CavityOptions options;
-  options.max_size_mm = 4.5;  // graded: wall edges ~2.2 mm, 4.5 mm inside
+  options.max_size_mm = 4.0;  // graded: wall edges ~1.8 mm, 4 mm inside
   const VolumeMesh m = build_bladder_mesh(surface, MembraneOptions{}, options, label.string());
   test::expect_acceptance(m);
   expect_within_25_percent(m.triangles.rows(), 17000);

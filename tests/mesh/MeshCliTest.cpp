@@ -57,18 +57,25 @@ void write_vtp(const mesh::SurfaceMesh& s, const fs::path& path) {
 struct CliRun {
   int exit_code;
   std::string err;
+  std::string out;
 };
 
-CliRun run_mesh(const std::string& args, const fs::path& dir) {
-  const fs::path err = dir / "stderr.txt";
-  const std::string cmd =
-      (test::bin_dir() / "vesica-mesh").string() + " " + args + " 2> " + err.string();
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(err);
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
   std::stringstream ss;
   ss << in.rdbuf();
+  return ss.str();
+}
+
+CliRun run_mesh(const std::string& args, const fs::path& dir) {
+  const fs::path err = dir / "stderr.txt", out = dir / "stdout.txt";
+  const std::string cmd = (test::bin_dir() / "vesica-mesh").string() + " " + args + " 2> " +
+                          err.string() + " > " + out.string();
+  const int status = std::system(cmd.c_str());
+  CliRun run{WEXITSTATUS(status), slurp(err), slurp(out)};
   fs::remove(err);
-  return {WEXITSTATUS(status), ss.str()};
+  fs::remove(out);
+  return run;
 }
 
 }  // namespace
@@ -97,6 +104,18 @@ TEST(MeshCli, WritesMshVtuAndReport) {
   EXPECT_NEAR(j["tetrahedra_volume_ml"].get<double>(), expected_ml, 1e-9 * expected_ml);
   EXPECT_GT(j["region_triangle_counts"]["fixed"].get<long>(), 0);
   EXPECT_GE(j["quality"]["tet_min_dihedral_deg"].get<double>(), 5.0);
+}
+
+TEST(MeshCli, JsonPrintsOnlyTheSummary) {
+  const fs::path dir = test::scratch_dir("mesh-cli-json");
+  write_vtp(test::icosphere(20.0, 2), dir / "s.vtp");
+  const CliRun r = run_mesh(
+      (dir / "s.vtp").string() + " -o " + (dir / "b.msh").string() + " --fluid --json", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");                         // neither our log nor gmsh's
+  const auto j = nlohmann::json::parse(r.out);  // throws if anything else is on stdout
+  EXPECT_EQ(j["triangle_count"], 320);
+  EXPECT_GT(j["tetrahedron_count"].get<long>(), 0);
 }
 
 TEST(MeshCli, OpenSurfaceIsRefusedWithItsDefects) {
