@@ -59,18 +59,6 @@ void finish_options(const RawOptions& raw, SurfaceStageOptions& options) {
   if (!raw.morph.empty()) options.morph = parse_point(raw.morph, "--morph");
 }
 
-// Options given on the command line, by their pipeline-file key (dashes to underscores).
-void record_given_options(const CLI::App& app, vesica::StageRecord& record) {
-  for (const CLI::Option* option : app.get_options()) {
-    if (option->count() == 0 || option->get_lnames().empty()) continue;
-    std::string key = option->get_lnames().front();
-    for (char& c : key)
-      if (c == '-') c = '_';
-    if (key == "help" || key == "report" || key == "manifest" || key == "json") continue;
-    record.parameters()[key] = option->as<std::string>();
-  }
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -125,7 +113,6 @@ int main(int argc, char** argv) {
     options.volume_rescale = !no_volume_rescale;
     finish_options(raw, options);
     vesica::StageRecord record("vesica-surface", argc, argv);
-    record_given_options(app, record);
     vesica::surface::run_surface_stage(options, record);
     const auto summary =
         record.write(common.report, vesica::default_manifest_path(common, options.output));

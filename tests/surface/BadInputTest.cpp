@@ -151,5 +151,31 @@ TEST(SurfaceBadInput, InvertedNormalsAreFixedWithANote) {
   EXPECT_NEAR(surface::enclosed_volume(fixed.V, fixed.F) / volume, 1.0, 1e-6);
 }
 
+TEST(SurfaceBadInput, ExtraComponentsAreRemovedWithANote) {
+  const auto dir = scratch_dir("surface-bad-components");
+  const TriangleSurface big = sphere();
+  surface::ShapeSpec small_spec;
+  small_spec.volume_ml = 10;
+  small_spec.edge_mm = 4;
+  small_spec.center_mm = Eigen::Vector3d(120, 0, 0);
+  const TriangleSurface small = surface::make_shape(small_spec);
+  TriangleSurface both;
+  both.V.resize(big.V.rows() + small.V.rows(), 3);
+  both.V << big.V, small.V;
+  both.F.resize(big.F.rows() + small.F.rows(), 3);
+  both.F << big.F, (small.F.array() + static_cast<int>(big.V.rows())).matrix();
+  surface::write_surface(both, dir / "two.ply");
+  const ToolRun run = run_surface((dir / "two.ply").string() + " -o " + (dir / "out.vtp").string() +
+                                      " --report " + (dir / "r.json").string(),
+                                  dir);
+  ASSERT_EQ(run.exit_code, 0) << run.stderr_text;
+  std::ifstream in(dir / "r.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["checks"]["components"], 1);
+  EXPECT_NE(summary["notes"].dump().find("removed 1 component"), std::string::npos)
+      << summary["notes"];
+  EXPECT_NEAR(summary["volume_ml"].get<double>(), 150.0, 1e-3);
+}
+
 }  // namespace
 }  // namespace vesica::test

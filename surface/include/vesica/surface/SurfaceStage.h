@@ -37,6 +37,9 @@ struct SurfaceStageOptions {
 // outputs and timings.
 TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecord& record);
 
+// Every option's effective value, keyed by its pipeline-file name (for the manifest).
+nlohmann::json effective_parameters(const SurfaceStageOptions& options);
+
 // Summary numbers of a finished surface: volume, area, counts, quality, checks.
 nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChecks& checks);
 
