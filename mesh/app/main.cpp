@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -69,7 +70,9 @@ std::map<Region, double> parse_thickness_by_region(const std::string& text) {
   return result;
 }
 
-Eigen::Vector3d parse_direction(const std::string& text) {
+// "x,y,z" or "long-axis" (the principal axis of the wall, decided once it is read).
+std::optional<Eigen::Vector3d> parse_direction(const std::string& text) {
+  if (text == "long-axis") return std::nullopt;
   const auto parts = split(text, ',');
   if (parts.size() != 3) usage_error("--fiber-direction: expected x,y,z, got '" + text + "'");
   Eigen::Vector3d d;
@@ -96,7 +99,7 @@ int run(const Options& o, const CommonOptions& common, StageRecord& record) {
   MembraneOptions membrane;
   membrane.thickness_mm = o.thickness_mm;
   membrane.thickness_by_region_mm = parse_thickness_by_region(o.thickness_by_region);
-  membrane.fiber_direction = parse_direction(o.fiber_direction);
+  const std::optional<Eigen::Vector3d> direction = parse_direction(o.fiber_direction);
   std::optional<CavityOptions> cavity;
   if (o.fluid) cavity = CavityOptions{o.tet_size_mm, o.grading, true};
 
@@ -113,6 +116,9 @@ int run(const Options& o, const CommonOptions& common, StageRecord& record) {
     PhaseTimer timer(record, "read");
     surface = read_surface(o.input);
   }
+  membrane.fiber_direction = direction ? *direction : long_axis(surface);
+  record.parameters()["fiber_direction_used"] = {
+      membrane.fiber_direction.x(), membrane.fiber_direction.y(), membrane.fiber_direction.z()};
   const double surface_volume_mm3 = std::abs(enclosed_volume_mm3(surface));
   VolumeMesh mesh;
   {
@@ -171,7 +177,7 @@ int main(int argc, char** argv) {
   app.add_option("--grading", o.grading, "Growth of the tetrahedron size per mm from the wall")
       ->capture_default_str();
   app.add_option("--fiber-direction", o.fiber_direction,
-                 "Direction x,y,z projected onto each triangle as fiber family 1")
+                 "Direction x,y,z (or long-axis) projected onto each triangle as fiber family 1")
       ->capture_default_str();
   add_common_options(app, common);
   return run_stage_main(app, argc, argv, common, [&] {

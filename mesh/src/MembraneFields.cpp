@@ -1,5 +1,6 @@
 #include "vesica/mesh/MembraneFields.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 namespace vesica::mesh {
@@ -15,6 +16,22 @@ double thickness_of(int region, const MembraneOptions& options) {
 }
 
 }  // namespace
+
+Eigen::Vector3d long_axis(const SurfaceMesh& surface) {
+  const Eigen::VectorXd areas = triangle_areas_mm2(surface);
+  Eigen::MatrixXd centroids(surface.triangles.rows(), 3);
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    centroids.row(t) =
+        (surface.points.row(surface.triangles(t, 0)) + surface.points.row(surface.triangles(t, 1)) +
+         surface.points.row(surface.triangles(t, 2))) /
+        3.0;
+  const double total = areas.sum();
+  const Eigen::RowVector3d mean = (areas.transpose() * centroids) / total;
+  const Eigen::MatrixXd centred = centroids.rowwise() - mean;
+  const Eigen::Matrix3d covariance = centred.transpose() * areas.asDiagonal() * centred / total;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+  return eigen.eigenvectors().col(2).normalized();  // eigenvalues ascend
+}
 
 MembraneFields membrane_fields(const SurfaceMesh& surface, const MembraneOptions& options) {
   const Eigen::Index m = surface.triangles.rows();

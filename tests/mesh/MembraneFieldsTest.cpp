@@ -50,3 +50,12 @@ TEST(MembraneFields, DirectionNormalToTriangleFallsBackToEdge) {
   EXPECT_NEAR((f.fiber1.row(0) - Eigen::RowVector3d(1, 0, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((f.fiber2.row(0) - Eigen::RowVector3d(0, 1, 0)).norm(), 0.0, 1e-12);
 }
+
+TEST(MembraneFields, LongAxisOfAnEllipsoidIsItsLongestSemiAxis) {
+  SurfaceMesh s = test::icosphere(1.0, 3);
+  s.points = s.points * Eigen::Vector3d(50.0, 20.0, 30.0).asDiagonal();
+  s.points.rowwise() += Eigen::RowVector3d(-10.0, 200.0, 35.0);  // anywhere in the body
+  EXPECT_NEAR(std::abs(long_axis(s).x()), 1.0, 1e-9);
+  s.points = test::icosphere(1.0, 3).points * Eigen::Vector3d(20.0, 30.0, 50.0).asDiagonal();
+  EXPECT_NEAR(std::abs(long_axis(s).z()), 1.0, 1e-9);
+}

@@ -109,8 +109,9 @@ TEST(MeshCli, WritesMshVtuAndReport) {
 TEST(MeshCli, JsonPrintsOnlyTheSummary) {
   const fs::path dir = test::scratch_dir("mesh-cli-json");
   write_vtp(test::icosphere(20.0, 2), dir / "s.vtp");
-  const CliRun r = run_mesh(
-      (dir / "s.vtp").string() + " -o " + (dir / "b.msh").string() + " --fluid --json", dir);
+  const CliRun r = run_mesh((dir / "s.vtp").string() + " -o " + (dir / "b.msh").string() +
+                                " --fluid --json --fiber-direction long-axis",
+                            dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");                         // neither our log nor gmsh's
   const auto j = nlohmann::json::parse(r.out);  // throws if anything else is on stdout

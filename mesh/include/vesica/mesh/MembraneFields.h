@@ -23,6 +23,10 @@ struct MembraneFields {
   Eigen::MatrixXd fiber2;        // M x 3, unit, in plane, perpendicular to fiber1
 };
 
+// The bladder's long axis: the principal direction of largest spread of the wall
+// (area-weighted covariance of the triangle centroids), a unit vector.
+Eigen::Vector3d long_axis(const SurfaceMesh& surface);
+
 // Where the direction is (nearly) normal to a triangle its projection is meaningless;
 // family 1 then follows the triangle's first edge.
 MembraneFields membrane_fields(const SurfaceMesh& surface, const MembraneOptions& options);
