@@ -88,6 +88,7 @@ class Execution {
   void launch_ready() {
     for (std::size_t i = 0; i < plan_.stages.size(); ++i) {
       if (static_cast<int>(running_.size()) >= std::max(1, options_.jobs)) return;
+      if (!result_.ok) return;  // a stage could not even start
       if (!ready(i)) continue;
       const PlannedStage& s = plan_.stages[i];
       ++launched_;
