@@ -29,11 +29,21 @@ Eigen::Vector3d parse_point(const std::string& text, const std::string& option) 
   return {values[0], values[1], values[2]};
 }
 
+// "x,y,z;x,y,z", or the flat "x1,y1,z1,x2,y2,z2" a pipeline-file list of points becomes.
 std::vector<Eigen::Vector3d> parse_points(const std::string& text, const std::string& option) {
   std::vector<Eigen::Vector3d> points;
   std::stringstream in(text);
-  for (std::string item; std::getline(in, item, ';');)
-    if (!item.empty()) points.push_back(parse_point(item, option));
+  if (text.find(';') != std::string::npos) {
+    for (std::string item; std::getline(in, item, ';');)
+      if (!item.empty()) points.push_back(parse_point(item, option));
+    return points;
+  }
+  std::vector<std::string> numbers;
+  for (std::string item; std::getline(in, item, ',');) numbers.push_back(item);
+  if (numbers.size() % 3 != 0)
+    vesica::usage_error(option + ": \"" + text + "\" is not x,y,z;x,y,z");
+  for (std::size_t i = 0; i < numbers.size(); i += 3)
+    points.push_back(parse_point(numbers[i] + "," + numbers[i + 1] + "," + numbers[i + 2], option));
   return points;
 }
 
@@ -98,7 +108,8 @@ int main(int argc, char** argv) {
                  "bladder neck landmark x,y,z (LPS mm) or auto (most inferior point)");
   app.add_option("--outlet-radius-mm", options.regions.outlet_radius_mm,
                  "geodesic radius of the outlet patch");
-  app.add_option("--inlets", raw.inlets, "ureter orifice landmarks x,y,z;x,y,z (LPS mm)");
+  app.add_option("--inlets", raw.inlets,
+                 "ureter orifice landmarks x,y,z;x,y,z or x1,y1,z1,x2,y2,z2 (LPS mm)");
   app.add_option("--inlet-radius-mm", options.regions.inlet_radius_mm,
                  "geodesic radius of each inlet patch");
   app.add_option("--fixed-radius-mm", options.regions.fixed_radius_mm,
