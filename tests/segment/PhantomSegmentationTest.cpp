@@ -55,6 +55,14 @@ TEST(PhantomSegmentation, ThreeMillimetreSeriesVolumeWithinTwoPercent) {
   EXPECT_NEAR(stats.volume_ml, summary["volume_ml"].get<double>(), 1e-6);
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(stats.centroid_mm[i], truth["bladder_center_mm"][i].get<double>(), 1.5);
+  // Automatic seeding finds the same bladder.
+  ASSERT_EQ(run_tool("vesica-segment",
+                     (dir / "ct").string() + " -o " + (dir / "auto.nii.gz").string() +
+                         " --seed auto --report " + (dir / "auto.json").string(),
+                     dir),
+            0)
+      << vesica::test::read_text(dir / "stderr.txt");
+  EXPECT_NEAR(read_json(dir / "auto.json")["volume_ml"].get<double>(), exact_ml, 0.02 * exact_ml);
 }
 
 TEST(PhantomSegmentation, OneMillimetreSmallFieldVolumeWithinTwoPercent) {

@@ -40,3 +40,14 @@ TEST(RealCt, SeededSegmentationMatchesReference) {
   EXPECT_GE(d, 0.90);
   EXPECT_NEAR(stats.volume_ml, ref.volume_ml, 0.05 * ref.volume_ml);
 }
+
+TEST(RealCt, AutomaticSeedingMatchesReference) {
+  VESICA_REQUIRE_SHARED(dir, "data/ct/abdomen-3mm");
+  const auto c = load(dir);
+  seg::SegmentParams params;  // documented defaults, no seed
+  const auto result = seg::segment_bladder(*c.ct.image, params, "ct.nii.gz");
+  EXPECT_EQ(result.seed_mode, "auto");
+  const double d = seg::dice(*result.label, *c.reference);
+  RecordProperty("dice", std::to_string(d));
+  EXPECT_GE(d, 0.85);
+}

@@ -1,0 +1,226 @@
+#include "ImageOps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <itkBinaryBallStructuringElement.h>
+#include <itkBinaryDilateImageFilter.h>
+#include <itkBinaryErodeImageFilter.h>
+#include <itkBinaryFillholeImageFilter.h>
+#include <itkBinaryThresholdImageFilter.h>
+#include <itkConnectedComponentImageFilter.h>
+#include <itkConnectedThresholdImageFilter.h>
+#include <itkCurvatureAnisotropicDiffusionImageFilter.h>
+#include <itkImageRegionConstIteratorWithIndex.h>
+#include <itkRegionOfInterestImageFilter.h>
+#include <itkRelabelComponentImageFilter.h>
+#include <itkResampleImageFilter.h>
+#include <itkSignedMaurerDistanceMapImageFilter.h>
+
+#include "vesica/core/Units.h"
+
+namespace vesica::segment::ops {
+
+using Ball = itk::BinaryBallStructuringElement<Mask::PixelType, 3>;
+
+namespace {
+Ball ball_mm(const itk::ImageBase<3>& image, double radius_mm) {
+  Ball ball;
+  Ball::SizeType r;
+  for (int i = 0; i < 3; ++i)
+    r[i] = std::max<itk::SizeValueType>(
+        1, static_cast<itk::SizeValueType>(std::lround(radius_mm / image.GetSpacing()[i])));
+  ball.SetRadius(r);
+  ball.CreateStructuringElement();
+  return ball;
+}
+
+}  // namespace
+
+double voxel_ml(const itk::ImageBase<3>& image) {
+  const auto& s = image.GetSpacing();
+  return units::ml_from_mm3(s[0] * s[1] * s[2]);
+}
+
+std::size_t count(const Mask& m) {
+  const auto* p = m.GetBufferPointer();
+  const std::size_t n = m.GetLargestPossibleRegion().GetNumberOfPixels();
+  return static_cast<std::size_t>(std::count_if(p, p + n, [](auto v) { return v != 0; }));
+}
+
+Mask::Pointer erode(const Mask& m, double radius_mm) {
+  auto f = itk::BinaryErodeImageFilter<Mask, Mask, Ball>::New();
+  f->SetInput(&m);
+  f->SetKernel(ball_mm(m, radius_mm));
+  f->SetForegroundValue(1);
+  f->SetBackgroundValue(0);
+  f->Update();
+  return f->GetOutput();
+}
+
+Mask::Pointer dilate(const Mask& m, double radius_mm) {
+  auto f = itk::BinaryDilateImageFilter<Mask, Mask, Ball>::New();
+  f->SetInput(&m);
+  f->SetKernel(ball_mm(m, radius_mm));
+  f->SetForegroundValue(1);
+  f->SetBackgroundValue(0);
+  f->Update();
+  return f->GetOutput();
+}
+
+Mask::Pointer threshold(const Float& image, double lower, double upper) {
+  auto f = itk::BinaryThresholdImageFilter<Float, Mask>::New();
+  f->SetInput(&image);
+  f->SetLowerThreshold(static_cast<float>(lower));
+  f->SetUpperThreshold(static_cast<float>(upper));
+  f->SetInsideValue(1);
+  f->SetOutsideValue(0);
+  f->Update();
+  return f->GetOutput();
+}
+
+// The connected part of `m` that contains `seed` (flood fill).
+Mask::Pointer component_at(const Mask& m, const Index& seed) {
+  auto f = itk::ConnectedThresholdImageFilter<Mask, Mask>::New();
+  f->SetInput(&m);
+  f->SetLower(1);
+  f->SetUpper(1);
+  f->SetReplaceValue(1);
+  f->AddSeed(seed);
+  f->Update();
+  return f->GetOutput();
+}
+
+Mask::Pointer largest_component(const Mask& m) {
+  auto cc = itk::ConnectedComponentImageFilter<Mask, LabelMap>::New();
+  cc->SetInput(&m);
+  auto relabel = itk::RelabelComponentImageFilter<LabelMap, LabelMap>::New();
+  relabel->SetInput(cc->GetOutput());
+  auto keep = itk::BinaryThresholdImageFilter<LabelMap, Mask>::New();
+  keep->SetInput(relabel->GetOutput());
+  keep->SetLowerThreshold(1);
+  keep->SetUpperThreshold(1);
+  keep->SetInsideValue(1);
+  keep->SetOutsideValue(0);
+  keep->Update();
+  return keep->GetOutput();
+}
+
+Mask::Pointer fill_holes(const Mask& m) {
+  auto f = itk::BinaryFillholeImageFilter<Mask>::New();
+  f->SetInput(&m);
+  f->SetForegroundValue(1);
+  f->FullyConnectedOn();
+  f->Update();
+  return f->GetOutput();
+}
+
+Float::Pointer crop(const Float& image, const Float::PointType& centre, double radius_mm) {
+  const auto whole = image.GetLargestPossibleRegion();
+  Index c;
+  image.TransformPhysicalPointToIndex(centre, c);
+  Float::RegionType region;
+  for (int i = 0; i < 3; ++i) {
+    const auto r = static_cast<itk::IndexValueType>(std::ceil(radius_mm / image.GetSpacing()[i]));
+    region.SetIndex(i, c[i] - r);
+    region.SetSize(i, static_cast<itk::SizeValueType>(2 * r + 1));
+  }
+  region.Crop(whole);
+  auto f = itk::RegionOfInterestImageFilter<Float, Float>::New();
+  f->SetInput(&image);
+  f->SetRegionOfInterest(region);
+  f->Update();
+  return f->GetOutput();
+}
+
+// Resamples onto an isotropic grid of `spacing` covering the same physical box.
+Float::Pointer resample_isotropic(const Float& image, double spacing) {
+  using Image = Float;
+  auto f = itk::ResampleImageFilter<Image, Image>::New();
+  f->SetInput(&image);
+  typename Image::SizeType size;
+  typename Image::SpacingType s;
+  typename Image::PointType origin;
+  const auto in_size = image.GetLargestPossibleRegion().GetSize();
+  for (int i = 0; i < 3; ++i) {
+    const double extent = in_size[i] * image.GetSpacing()[i];
+    size[i] = std::max<itk::SizeValueType>(1, std::lround(extent / spacing));
+    s[i] = spacing;
+  }
+  // Same corner of the box: shift the first voxel centre by half the spacing change.
+  Float::PointType first;
+  image.TransformIndexToPhysicalPoint(image.GetLargestPossibleRegion().GetIndex(), first);
+  for (int r = 0; r < 3; ++r) {
+    origin[r] = first[r];
+    for (int c = 0; c < 3; ++c)
+      origin[r] += image.GetDirection()(r, c) * 0.5 * (spacing - image.GetSpacing()[c]);
+  }
+  f->SetSize(size);
+  f->SetOutputSpacing(s);
+  f->SetOutputOrigin(origin);
+  f->SetOutputDirection(image.GetDirection());
+  f->SetDefaultPixelValue(-1000);
+  f->Update();
+  return f->GetOutput();
+}
+
+Float::Pointer anisotropic_diffusion(const Float& image, int iterations, double conductance) {
+  auto f = itk::CurvatureAnisotropicDiffusionImageFilter<Float, Float>::New();
+  f->SetInput(&image);
+  const auto& s = image.GetSpacing();
+  // Stable explicit step in 3-D is 1 / 2^(N+1) (ITK scales by the spacing itself).
+  (void)s;
+  f->SetTimeStep(0.0625);
+  f->SetNumberOfIterations(static_cast<unsigned>(iterations));
+  f->SetConductanceParameter(conductance);
+  f->Update();
+  return f->GetOutput();
+}
+
+// The mask voxel nearest to `seed` within `radius_mm`, if any.
+std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm) {
+  const auto& s = m.GetSpacing();
+  Mask::RegionType box;
+  for (int i = 0; i < 3; ++i) {
+    const auto r = static_cast<itk::IndexValueType>(std::ceil(radius_mm / s[i]));
+    box.SetIndex(i, seed[i] - r);
+    box.SetSize(i, static_cast<itk::SizeValueType>(2 * r + 1));
+  }
+  if (!box.Crop(m.GetLargestPossibleRegion())) return std::nullopt;
+  std::optional<Index> best;
+  double best_d2 = radius_mm * radius_mm;
+  itk::ImageRegionConstIteratorWithIndex<Mask> it(&m, box);
+  for (; !it.IsAtEnd(); ++it) {
+    if (!it.Get()) continue;
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) d2 += std::pow((it.GetIndex()[i] - seed[i]) * s[i], 2);
+    if (d2 <= best_d2) best_d2 = d2, best = it.GetIndex();
+  }
+  return best;
+}
+
+Float::Pointer signed_distance(const Mask& m) {
+  auto f = itk::SignedMaurerDistanceMapImageFilter<Mask, Float>::New();
+  f->SetInput(&m);
+  f->SetInsideIsPositive(false);
+  f->SetUseImageSpacing(true);
+  f->SetSquaredDistance(false);
+  f->Update();
+  return f->GetOutput();
+}
+
+// Median of `image` where `where` is set (NaN when empty).
+double median_where(const Float& image, const Mask& where) {
+  std::vector<float> v;
+  const auto* w = where.GetBufferPointer();
+  const auto* x = image.GetBufferPointer();
+  const std::size_t n = where.GetLargestPossibleRegion().GetNumberOfPixels();
+  for (std::size_t i = 0; i < n; ++i)
+    if (w[i]) v.push_back(x[i]);
+  if (v.empty()) return std::nan("");
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+}  // namespace vesica::segment::ops

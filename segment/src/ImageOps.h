@@ -1,0 +1,33 @@
+#pragma once
+// Small image operations the segmentation steps share, each a thin wrapper around one
+// ITK filter with radii in millimetres (so that parameters do not depend on the grid).
+#include <optional>
+
+#include "vesica/segment/ImageTypes.h"
+
+namespace vesica::segment::ops {
+
+using Float = CtImage;
+using Mask = LabelImage;
+using Index = Float::IndexType;
+using LabelMap = itk::Image<unsigned int, 3>;
+
+double voxel_ml(const itk::ImageBase<3>& image);
+std::size_t count(const Mask& m);
+Mask::Pointer erode(const Mask& m, double radius_mm);
+Mask::Pointer dilate(const Mask& m, double radius_mm);
+Mask::Pointer threshold(const Float& image, double lower, double upper);
+Mask::Pointer component_at(const Mask& m, const Index& seed);  // flood fill from seed
+Mask::Pointer largest_component(const Mask& m);
+Mask::Pointer fill_holes(const Mask& m);
+// Cube of half edge radius_mm around centre, clipped to the image.
+Float::Pointer crop(const Float& image, const Float::PointType& centre, double radius_mm);
+// Same physical box on an isotropic grid (linear interpolation).
+Float::Pointer resample_isotropic(const Float& image, double spacing);
+Float::Pointer anisotropic_diffusion(const Float& image, int iterations, double conductance);
+// The mask voxel nearest to `seed` within radius_mm, if any.
+std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm);
+Float::Pointer signed_distance(const Mask& m);               // mm, negative inside
+double median_where(const Float& image, const Mask& where);  // NaN when empty
+
+}  // namespace vesica::segment::ops
