@@ -78,6 +78,35 @@ TriangleSurface read_with_assimp(const std::filesystem::path& path) {
   return out;
 }
 
+Eigen::MatrixXd triangle_centroids(const TriangleSurface& s) {
+  Eigen::MatrixXd c(s.F.rows(), 3);
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
+    c.row(f) = (s.V.row(s.F(f, 0)) + s.V.row(s.F(f, 1)) + s.V.row(s.F(f, 2))) / 3.0;
+  return c;
+}
+
+// A surface edited elsewhere (triangles added, removed, remeshed) no longer matches its
+// tags one to one: each triangle takes the tag of the nearest triangle centroid recorded.
+bool transfer_tags_by_centroid(const nlohmann::json& j, TriangleSurface& surface) {
+  if (!j.contains("centroids_mm")) return false;
+  const auto& flat = j.at("centroids_mm");
+  const auto& tags = j.at("region");
+  const Eigen::Index n = static_cast<Eigen::Index>(tags.size());
+  if (static_cast<Eigen::Index>(flat.size()) != 3 * n || n * surface.F.rows() > 200'000'000)
+    return false;
+  Eigen::MatrixXd recorded(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (int d = 0; d < 3; ++d) recorded(i, d) = flat[3 * i + d].get<double>();
+  const Eigen::MatrixXd centroids = triangle_centroids(surface);
+  surface.region.resize(surface.F.rows());
+  for (Eigen::Index f = 0; f < surface.F.rows(); ++f) {
+    Eigen::Index nearest = 0;
+    (recorded.rowwise() - centroids.row(f)).rowwise().squaredNorm().minCoeff(&nearest);
+    surface.region(f) = tags[nearest].get<int>();
+  }
+  return true;
+}
+
 void read_sidecar(const std::filesystem::path& path, TriangleSurface& surface) {
   const auto sidecar = regions_sidecar_path(path);
   if (!std::filesystem::exists(sidecar)) return;
@@ -88,24 +117,36 @@ void read_sidecar(const std::filesystem::path& path, TriangleSurface& surface) {
   } catch (const std::exception& e) {
     fail(sidecar.string(), std::string("not valid JSON: ") + e.what());
   }
+  if (!j.contains("region") || !j.at("region").is_array())
+    fail(sidecar.string(), "no \"region\" array of tags");
   const auto& tags = j.at("region");
-  if (static_cast<Eigen::Index>(tags.size()) != surface.F.rows()) {
-    log()->warn("{}: {} region tags for {} triangles (surface edited?); tags ignored",
-                sidecar.string(), tags.size(), surface.F.rows());
-    return;
+  if (static_cast<Eigen::Index>(tags.size()) == surface.F.rows()) {
+    surface.region.resize(surface.F.rows());
+    for (Eigen::Index f = 0; f < surface.F.rows(); ++f) surface.region(f) = tags[f].get<int>();
+  } else if (transfer_tags_by_centroid(j, surface)) {
+    log()->warn(
+        "{}: {} tags for {} triangles (surface edited); tags taken from the nearest "
+        "recorded triangle",
+        sidecar.string(), tags.size(), surface.F.rows());
+  } else {
+    log()->warn("{}: {} region tags for {} triangles; tags ignored", sidecar.string(), tags.size(),
+                surface.F.rows());
   }
-  surface.region.resize(surface.F.rows());
-  for (Eigen::Index f = 0; f < surface.F.rows(); ++f) surface.region(f) = tags[f].get<int>();
 }
 
 nlohmann::json sidecar_json(const TriangleSurface& surface) {
   nlohmann::json names = nlohmann::json::object();
   for (Region r : kAllRegions) names[std::to_string(static_cast<int>(r))] = region_name(r);
   const Eigen::VectorXi tags = surface.regions_or_wall();
-  return {{"units", "mm"},
-          {"triangle_count", surface.F.rows()},
-          {"region_names", names},
-          {"region", std::vector<int>(tags.data(), tags.data() + tags.size())}};
+  // Row-major x,y,z per triangle, so tags can follow triangles through outside edits.
+  const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> centroids =
+      triangle_centroids(surface);
+  return {
+      {"units", "mm"},
+      {"triangle_count", surface.F.rows()},
+      {"region_names", names},
+      {"region", std::vector<int>(tags.data(), tags.data() + tags.size())},
+      {"centroids_mm", std::vector<double>(centroids.data(), centroids.data() + centroids.size())}};
 }
 
 void write_polydata(vtkPolyData* poly, const std::string& ext, const WriteOptions& options,

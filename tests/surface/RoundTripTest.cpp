@@ -117,5 +117,22 @@ INSTANTIATE_TEST_SUITE_P(SurfaceFormats, RoundTrip,
                            return name + (std::get<1>(info.param) ? "_ascii" : "");
                          });
 
+// An outside edit (here: one triangle deleted, as in MeshLab) keeps the other tags.
+TEST(SurfaceFormats, EditedSurfaceKeepsTagsByNearestTriangle) {
+  const TriangleSurface original = tagged_ellipsoid();
+  const auto dir = scratch_dir("surface-edited");
+  surface::write_surface(original, dir / "s.ply");
+  TriangleSurface edited = original;
+  edited.F = original.F.bottomRows(original.F.rows() - 1);
+  edited.region = original.region.tail(original.region.size() - 1);
+  surface::write_surface(edited, dir / "edited.ply");
+  std::filesystem::copy_file(surface::regions_sidecar_path(dir / "s.ply"),
+                             surface::regions_sidecar_path(dir / "edited.ply"),
+                             std::filesystem::copy_options::overwrite_existing);
+  const TriangleSurface back = surface::read_surface(dir / "edited.ply");
+  ASSERT_EQ(back.F.rows(), edited.F.rows());
+  EXPECT_TRUE(back.region == edited.region);
+}
+
 }  // namespace
 }  // namespace vesica::test
