@@ -1,6 +1,7 @@
 #include "vesica/core/ContentHash.h"
 
 #include <openssl/evp.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -78,10 +79,14 @@ std::string sha256_hex(const std::string& bytes) {
 }
 
 FileStamp file_stamp(const fs::path& path) {
+  // POSIX stat, not fs::last_write_time: libstdc++'s file clock has its own epoch, which
+  // would put odd negative times into manifests.
   auto stamp_of = [](const fs::path& p) {
+    struct stat st {};
+    if (::stat(p.c_str(), &st) != 0) fail(p.string(), "cannot be read");
     FileStamp s;
-    s.size = fs::file_size(p);
-    s.mtime_ns = fs::last_write_time(p).time_since_epoch().count();
+    s.size = static_cast<std::uintmax_t>(st.st_size);
+    s.mtime_ns = static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1000000000 + st.st_mtim.tv_nsec;
     return s;
   };
   if (!fs::is_directory(path)) return stamp_of(path);
