@@ -43,7 +43,11 @@ CavityRun::CavityRun(const WallModel& wall, const Material& material,
   loads_.inside.rho = protocol.urine_density;
   loads_.inside.gravity = g;
   loads_.inside.x_ref = pressure_reference_point(wall, g);
-  loads_.wall_gravity = g;
+  // The abdomen is a fluid too: its hydrostatic gradient acts on the outer face.
+  loads_.outside.rho = protocol.abdominal_density;
+  loads_.outside.gravity = g;
+  loads_.outside.x_ref = loads_.inside.x_ref;
+  if (protocol.wall_weight) loads_.wall_gravity = g;
   loads_.wall_density = protocol.wall_density;
   loads_.support_stiffness = protocol.support_kpa_per_mm * 1e3 / 1e-3;  // kPa/mm → Pa/m
   set_time_loads(0.0);
@@ -52,7 +56,7 @@ CavityRun::CavityRun(const WallModel& wall, const Material& material,
 
 void CavityRun::set_time_loads(double t) {
   const double active = t_void_ >= 0.0 ? ramp(t - t_void_, protocol_.activation_ramp_s) : 0.0;
-  loads_.outside_pa = units::pa_from_cmh2o(protocol_.pabd_cmh2o) +
+  loads_.outside.p0 = units::pa_from_cmh2o(protocol_.pabd_cmh2o) +
                       active * units::pa_from_kpa(protocol_.straining_kpa);
   loads_.active_stress_pa = active * units::pa_from_kpa(protocol_.detrusor_kpa);
 }
@@ -132,7 +136,8 @@ void CavityRun::start_clock() {
 
 void CavityRun::begin_voiding() {
   t_void_ = t_;
-  q_out_ = 0.0;
+  double d = 0.0;
+  q_out_ = outlet_flow(loads_.inside.p0, d);  // the outlet opens on the current pressure
 }
 
 int CavityRun::step(double dt, double q_in, bool outlet) {

@@ -42,7 +42,7 @@ class CavityRun {
   double initial_volume() const { return V0_; }
   double initial_reference_volume() const { return V_reference_; }
   double pves() const { return loads_.inside.p0; }
-  double pabd() const { return loads_.outside_pa; }
+  double pabd() const { return loads_.outside.p0; }
   double outflow() const { return q_out_; }
   const WallModel& wall() const { return wall_; }
   const std::vector<Eigen::Vector3d>& positions() const { return x_; }

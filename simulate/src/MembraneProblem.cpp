@@ -143,7 +143,7 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     const MembraneResponse m =
         membrane_response(geometry_[e], xe, material_, point, C33_old_[e], h_old, h_new);
     self->C33_new_[e] = m.stress.C33;
-    const PressureResponse p = pressure_response(xe, loads.inside, loads.outside_pa);
+    const PressureResponse p = pressure_response(xe, loads.inside, loads.outside);
     self->element_f_[e] = m.f_int;
     self->element_fp_[e] = p.f;
     self->element_dfdp0_[e] = p.dfdp0;

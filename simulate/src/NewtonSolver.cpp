@@ -5,6 +5,8 @@
 
 #include <Eigen/UmfPackSupport>
 
+#include "vesica/core/Log.h"
+
 namespace vesica::simulate {
 
 struct NewtonSolver::Factorization {
@@ -51,6 +53,8 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     const bool c_ok =
         std::abs(c) <= options_.volume_tolerance * c_scale || (!cavity.volume_control && c == 0.0);
     report.residual_norms.push_back(r_rel);
+    vesica::log()->debug("newton {}: |r|/|f| = {:.3e}, |r| = {:.3e} N, c = {:.3e}, p0 = {:.6g} Pa",
+                         it, r_rel, A.residual.norm(), c, loads.inside.p0);
     report.iterations = it;
     if (!std::isfinite(r_rel) || !std::isfinite(c)) {
       report.failure = "residual is not finite";

@@ -10,16 +10,18 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 }  // namespace
 
 PressureResponse pressure_response(const std::array<Eigen::Vector3d, 3>& x,
-                                   const HydrostaticPressure& inside, double outside_pa) {
+                                   const HydrostaticPressure& inside,
+                                   const HydrostaticPressure& outside) {
   PressureResponse r;
   const Eigen::Vector3d n2 = (x[1] - x[0]).cross(x[2] - x[0]);  // twice the area vector
   double p[3];
-  for (int a = 0; a < 3; ++a) p[a] = inside.at(x[a]) - outside_pa;
+  for (int a = 0; a < 3; ++a) p[a] = inside.at(x[a]) - outside.at(x[a]);
   const double P = p[0] + p[1] + p[2];
   // d(n2) = Σ_b δx_b × (x_{b+1} - x_{b+2}) = -Σ_b skew(x_{b+1} - x_{b+2}) δx_b
   std::array<Eigen::Matrix3d, 3> dn2;
   for (int b = 0; b < 3; ++b) dn2[b] = -skew(x[(b + 1) % 3] - x[(b + 2) % 3]);
-  const Eigen::RowVector3d dp = inside.rho * inside.gravity.transpose();  // ∂p_c/∂x_c
+  const Eigen::RowVector3d dp =  // ∂p_c/∂x_c
+      inside.rho * inside.gravity.transpose() - outside.rho * outside.gravity.transpose();
   for (int a = 0; a < 3; ++a) {
     const double s = p[a] + P;
     r.f.segment<3>(3 * a) = n2 * s / 24.0;

@@ -21,7 +21,9 @@ std::array<Eigen::Vector3d, 3> reference_triangle() {
 
 std::array<Eigen::Vector3d, 3> deformed(const std::array<Eigen::Vector3d, 3>& X) {
   Eigen::Matrix3d F;
-  F << 1.4, 0.1, 0.05, -0.2, 1.2, 0.1, 0.1, 0.05, 0.9;
+  // Stretched in every in-plane direction: the element tangent is exact (consistent) for a
+  // wall in tension; compressed walls get the tension-field geometric stiffness.
+  F << 1.4, 0.1, 0.05, 0.05, 1.3, 0.1, 0.1, 0.05, 1.2;
   std::array<Eigen::Vector3d, 3> x;
   for (int a = 0; a < 3; ++a) x[a] = F * X[a] + Eigen::Vector3d(0.001, -0.002, 0.0005) * a;
   return x;
@@ -58,19 +60,22 @@ TEST(PressureLoad, TangentMatchesFiniteDifferences) {
   HydrostaticPressure p{800.0, 1000.0, Eigen::Vector3d(0.0, 9.81, 0.0),
                         Eigen::Vector3d(0.0, 0.01, 0.0)};
   const auto x = deformed(reference_triangle());
-  const PressureResponse r = pressure_response(x, p, 150.0);
+  const HydrostaticPressure abdomen{150.0, 500.0, Eigen::Vector3d(0.0, 9.81, 0.0),
+                                    Eigen::Vector3d(0.0, 0.02, 0.0)};
+  const PressureResponse r = pressure_response(x, p, abdomen);
   Eigen::Matrix<double, 9, 9> fd;
   for (int q = 0; q < 9; ++q) {
     const double h = 1e-8;
     auto xp = x, xm = x;
     xp[q / 3](q % 3) += h;
     xm[q / 3](q % 3) -= h;
-    fd.col(q) = (pressure_response(xp, p, 150.0).f - pressure_response(xm, p, 150.0).f) / (2 * h);
+    fd.col(q) =
+        (pressure_response(xp, p, abdomen).f - pressure_response(xm, p, abdomen).f) / (2 * h);
   }
   EXPECT_LT((r.dfdx - fd).norm() / r.dfdx.norm(), 1e-6);
   // Uniform pressure on a flat triangle: total force p·(area vector).
   HydrostaticPressure uniform{1000.0, 0.0, {}, {}};
-  const auto ru = pressure_response(x, uniform, 0.0);
+  const auto ru = pressure_response(x, uniform, HydrostaticPressure{});
   const Eigen::Vector3d total = ru.f.segment<3>(0) + ru.f.segment<3>(3) + ru.f.segment<3>(6);
   const Eigen::Vector3d expected = 1000.0 * 0.5 * (x[1] - x[0]).cross(x[2] - x[0]);
   EXPECT_LT((total - expected).norm(), 1e-12 * expected.norm());

@@ -63,10 +63,15 @@ struct CystometryProtocol {
   double max_void_s = 120.0;
   // Environment
   Posture posture = Posture::Supine;
-  bool gravity = true;              // hydrostatic urine pressure and wall weight
-  double urine_density = 1000.0;    // kg/m³
-  double wall_density = 920.0;      // kg/m³
-  double support_kpa_per_mm = 0.0;  // springs on the support region (kPa per mm)
+  bool gravity = true;            // hydrostatic urine pressure and wall weight
+  double urine_density = 1000.0;  // kg/m³
+  // Abdominal contents as a fluid at the same reference height: with the urine's density
+  // the transmural pressure has no hydrostatic gradient (Pabd is measured beside Pves);
+  // 0 = a bladder in air, whose low-pressure top is then in compression.
+  double abdominal_density = 1000.0;  // kg/m³
+  bool wall_weight = false;           // the wall's own weight (buoyant in the abdomen)
+  double wall_density = 920.0;        // kg/m³
+  double support_kpa_per_mm = 0.0;    // springs on the support region (kPa per mm)
   // Prestress reference: the imaged geometry is in equilibrium at this pressure.
   double image_pressure_cmh2o = 10.0;
 };

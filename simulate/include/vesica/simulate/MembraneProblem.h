@@ -18,8 +18,8 @@
 namespace vesica::simulate {
 
 struct WallLoads {
-  HydrostaticPressure inside;  // urine; inside.p0 is the cavity pressure unknown
-  double outside_pa = 0.0;     // abdominal pressure on the outer face (Pa)
+  HydrostaticPressure inside;   // urine; inside.p0 is the cavity pressure unknown
+  HydrostaticPressure outside;  // abdominal pressure on the outer face (Pa); outside.p0 = Pabd
   Eigen::Vector3d wall_gravity = Eigen::Vector3d::Zero();  // m/s² acting on the wall mass
   double wall_density = 920.0;                             // kg/m³ (physics.md §2)
   double support_stiffness = 0.0;  // springs of the support region, Pa/m (per unit area)

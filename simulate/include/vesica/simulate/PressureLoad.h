@@ -25,9 +25,11 @@ struct PressureResponse {
 };
 
 // x: current node positions (m), ordered so that the normal points out of the cavity.
-// outside_pa: a uniform pressure acting from outside (abdominal), subtracted.
+// outside: the abdominal pressure on the outer face (hydrostatic too), subtracted; only
+// inside.p0 is an unknown (dfdp0).
 PressureResponse pressure_response(const std::array<Eigen::Vector3d, 3>& x,
-                                   const HydrostaticPressure& inside, double outside_pa);
+                                   const HydrostaticPressure& inside,
+                                   const HydrostaticPressure& outside);
 
 // ∂V/∂x_a of the triangle's share V = x1·(x2×x3)/6 of the enclosed volume (m²).
 Eigen::Matrix<double, 9, 1> volume_gradient(const std::array<Eigen::Vector3d, 3>& x);
