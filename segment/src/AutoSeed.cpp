@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <itkConnectedComponentImageFilter.h>
-#include <itkDiscreteGaussianImageFilter.h>
 #include <itkImageRegionConstIteratorWithIndex.h>
 
 #include "ImageOps.h"
@@ -23,15 +22,6 @@ struct Core {
   double best_depth = 0;  // most negative signed distance (deepest point)
   Index deepest{};
 };
-
-Float::Pointer gaussian(const Float& image, double sigma_mm) {
-  auto f = itk::DiscreteGaussianImageFilter<Float, Float>::New();
-  f->SetInput(&image);
-  f->SetVariance(sigma_mm * sigma_mm);
-  f->SetUseImageSpacing(true);
-  f->Update();
-  return f->GetOutput();
-}
 
 // Height of a point along the patient I-S axis as a fraction of the scan's extent.
 double height_fraction(const Float& image, const Float::PointType& p) {

@@ -34,6 +34,10 @@ namespace vesica::segment {
 namespace {
 
 using namespace ops;
+
+constexpr double kCoarseSpacingMm = 4.0;    // grid of the quick bounding pass
+constexpr double kCoarseSmoothingMm = 2.0;  // Gaussian sigma of the quick pass
+constexpr double kBoxMarginMm = 20.0;       // the fine steps may reach this far beyond it
 // The partial-volume border: half way between the urine level inside the region and
 // the level of its immediate surroundings, so that border voxels split evenly whether
 // the bladder touches fat (phantom, lean patients) or wall and soft tissue.
@@ -85,6 +89,25 @@ Float::Pointer refine_level_set(const Float& smoothed, const Mask& region, doubl
   return phi;
 }
 
+// Where the bladder can be: a quick coarse pass (4 mm grid, Gaussian smoothing, the
+// window, the opening) around the seed gives a box, grown by a margin, that bounds the
+// expensive fine steps. Falls back to the whole region of interest.
+Float::RegionType bladder_box(const Float& ct, const Float::PointType& seed,
+                              const SegmentParams& p) {
+  const auto around = region_around(ct, seed, p.roi_radius_mm);
+  auto coarse =
+      resample_isotropic(*crop_region(ct, around), std::max(p.work_spacing_mm, kCoarseSpacingMm));
+  auto window = threshold(*gaussian(*coarse, kCoarseSmoothingMm), p.lower_hu, p.upper_hu);
+  auto core = erode(*window, p.opening_mm);
+  Index seed_index;
+  coarse->TransformPhysicalPointToIndex(seed, seed_index);
+  const auto start = nearest_inside(*core, seed_index, p.seed_search_mm + p.opening_mm);
+  if (!start) return around;
+  auto region = dilate(*component_at(*core, *start), p.opening_mm);
+  auto box = region_covering(ct, *region, kBoxMarginMm);
+  return box.Crop(around) ? box : around;
+}
+
 // Seconds per step into the diagnostics, to see where the time goes.
 class StepClock {
  public:
@@ -134,7 +157,10 @@ SegmentResult segment_bladder(const CtImage& ct, const SegmentParams& p,
   }
 
   // 1-2: region of interest, working grid, smoothing.
-  auto roi = crop(ct, seed_point, p.roi_radius_mm);
+  auto roi = crop_region(ct, bladder_box(ct, seed_point, p));
+  diag["box_size"] = {roi->GetLargestPossibleRegion().GetSize()[0],
+                      roi->GetLargestPossibleRegion().GetSize()[1],
+                      roi->GetLargestPossibleRegion().GetSize()[2]};
   const auto& native = roi->GetSpacing();
   const bool coarsen = std::min({native[0], native[1], native[2]}) < p.work_spacing_mm * 0.999;
   Float::Pointer work = coarsen ? resample_isotropic(*roi, p.work_spacing_mm) : roi;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <itkBinaryBallStructuringElement.h>
@@ -12,6 +13,7 @@
 #include <itkConnectedComponentImageFilter.h>
 #include <itkConnectedThresholdImageFilter.h>
 #include <itkCurvatureAnisotropicDiffusionImageFilter.h>
+#include <itkDiscreteGaussianImageFilter.h>
 #include <itkImageRegionConstIteratorWithIndex.h>
 #include <itkRegionOfInterestImageFilter.h>
 #include <itkRelabelComponentImageFilter.h>
@@ -116,8 +118,8 @@ Mask::Pointer fill_holes(const Mask& m) {
   return f->GetOutput();
 }
 
-Float::Pointer crop(const Float& image, const Float::PointType& centre, double radius_mm) {
-  const auto whole = image.GetLargestPossibleRegion();
+Float::RegionType region_around(const Float& image, const Float::PointType& centre,
+                                double radius_mm) {
   Index c;
   image.TransformPhysicalPointToIndex(centre, c);
   Float::RegionType region;
@@ -126,12 +128,8 @@ Float::Pointer crop(const Float& image, const Float::PointType& centre, double r
     region.SetIndex(i, c[i] - r);
     region.SetSize(i, static_cast<itk::SizeValueType>(2 * r + 1));
   }
-  region.Crop(whole);
-  auto f = itk::RegionOfInterestImageFilter<Float, Float>::New();
-  f->SetInput(&image);
-  f->SetRegionOfInterest(region);
-  f->Update();
-  return f->GetOutput();
+  region.Crop(image.GetLargestPossibleRegion());
+  return region;
 }
 
 // Resamples onto an isotropic grid of `spacing` covering the same physical box.
@@ -221,6 +219,63 @@ double median_where(const Float& image, const Mask& where) {
   if (v.empty()) return std::nan("");
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
+}
+
+Float::RegionType region_covering(const Float& image, const Mask& mask, double margin_mm) {
+  // Bounding box of the mask in its own index space, then its corners in patient space.
+  Index lo, hi;
+  lo.Fill(std::numeric_limits<itk::IndexValueType>::max());
+  hi.Fill(std::numeric_limits<itk::IndexValueType>::min());
+  itk::ImageRegionConstIteratorWithIndex<Mask> it(&mask, mask.GetLargestPossibleRegion());
+  for (; !it.IsAtEnd(); ++it)
+    if (it.Get())
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], it.GetIndex()[i]);
+        hi[i] = std::max(hi[i], it.GetIndex()[i]);
+      }
+  Float::RegionType region = image.GetLargestPossibleRegion();
+  if (lo[0] > hi[0]) return region;  // empty mask: everything
+  Index rlo, rhi;
+  rlo.Fill(std::numeric_limits<itk::IndexValueType>::max());
+  rhi.Fill(std::numeric_limits<itk::IndexValueType>::min());
+  for (int corner = 0; corner < 8; ++corner) {
+    itk::ContinuousIndex<double, 3> c;
+    for (int i = 0; i < 3; ++i)
+      c[i] = ((corner >> i) & 1) ? hi[i] + 0.5 + margin_mm / mask.GetSpacing()[i]
+                                 : lo[i] - 0.5 - margin_mm / mask.GetSpacing()[i];
+    Float::PointType p;
+    mask.TransformContinuousIndexToPhysicalPoint(c, p);
+    itk::ContinuousIndex<double, 3> k;
+    image.TransformPhysicalPointToContinuousIndex(p, k);
+    for (int i = 0; i < 3; ++i) {
+      rlo[i] = std::min(rlo[i], static_cast<itk::IndexValueType>(std::floor(k[i])));
+      rhi[i] = std::max(rhi[i], static_cast<itk::IndexValueType>(std::ceil(k[i])));
+    }
+  }
+  Float::RegionType box;
+  for (int i = 0; i < 3; ++i) {
+    box.SetIndex(i, rlo[i]);
+    box.SetSize(i, static_cast<itk::SizeValueType>(rhi[i] - rlo[i] + 1));
+  }
+  if (!box.Crop(region)) return region;
+  return box;
+}
+
+Float::Pointer crop_region(const Float& image, const Float::RegionType& region) {
+  auto f = itk::RegionOfInterestImageFilter<Float, Float>::New();
+  f->SetInput(&image);
+  f->SetRegionOfInterest(region);
+  f->Update();
+  return f->GetOutput();
+}
+
+Float::Pointer gaussian(const Float& image, double sigma_mm) {
+  auto f = itk::DiscreteGaussianImageFilter<Float, Float>::New();
+  f->SetInput(&image);
+  f->SetVariance(sigma_mm * sigma_mm);
+  f->SetUseImageSpacing(true);
+  f->Update();
+  return f->GetOutput();
 }
 
 }  // namespace vesica::segment::ops

@@ -21,7 +21,13 @@ Mask::Pointer component_at(const Mask& m, const Index& seed);  // flood fill fro
 Mask::Pointer largest_component(const Mask& m);
 Mask::Pointer fill_holes(const Mask& m);
 // Cube of half edge radius_mm around centre, clipped to the image.
-Float::Pointer crop(const Float& image, const Float::PointType& centre, double radius_mm);
+Float::RegionType region_around(const Float& image, const Float::PointType& centre,
+                                double radius_mm);
+// The index region of `image` covering the mask's voxels grown by margin_mm (mask and
+// image may have different grids), clipped to the image.
+Float::RegionType region_covering(const Float& image, const Mask& mask, double margin_mm);
+Float::Pointer crop_region(const Float& image, const Float::RegionType& region);
+Float::Pointer gaussian(const Float& image, double sigma_mm);
 // Same physical box on an isotropic grid (linear interpolation).
 Float::Pointer resample_isotropic(const Float& image, double spacing);
 Float::Pointer anisotropic_diffusion(const Float& image, int iterations, double conductance);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <limits>
 
+#include <itkBinaryThresholdImageFilter.h>
+#include <itkCastImageFilter.h>
 #include <itkImageRegionConstIteratorWithIndex.h>
-#include <itkNearestNeighborInterpolateImageFunction.h>
+#include <itkLinearInterpolateImageFunction.h>
 #include <itkResampleImageFilter.h>
 
 #include "vesica/core/Error.h"
@@ -57,15 +59,24 @@ double dice(const LabelImage& a, const LabelImage& b) {
 }
 
 LabelImage::Pointer resample_label_like(const LabelImage& label, const LabelImage& like) {
-  using Resample = itk::ResampleImageFilter<LabelImage, LabelImage>;
-  auto resample = Resample::New();
-  resample->SetInput(&label);
-  resample->SetInterpolator(
-      itk::NearestNeighborInterpolateImageFunction<LabelImage, double>::New());
+  // Linear interpolation of the 0/1 label, then the 0.5 level: the border lands where
+  // the labels' own voxel faces put it, which nearest neighbour would shift by up to half
+  // a voxel.
+  using Real = itk::Image<float, 3>;
+  auto cast = itk::CastImageFilter<LabelImage, Real>::New();
+  cast->SetInput(&label);
+  auto resample = itk::ResampleImageFilter<Real, Real>::New();
+  resample->SetInput(cast->GetOutput());
+  resample->SetInterpolator(itk::LinearInterpolateImageFunction<Real, double>::New());
   resample->SetOutputParametersFromImage(&like);
   resample->SetDefaultPixelValue(0);
-  resample->Update();
-  return resample->GetOutput();
+  auto level = itk::BinaryThresholdImageFilter<Real, LabelImage>::New();
+  level->SetInput(resample->GetOutput());
+  level->SetLowerThreshold(0.5f);
+  level->SetInsideValue(1);
+  level->SetOutsideValue(0);
+  level->Update();
+  return level->GetOutput();
 }
 
 }  // namespace vesica::segment

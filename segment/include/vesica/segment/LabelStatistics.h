@@ -22,8 +22,8 @@ LabelStatistics label_statistics(const LabelImage& label);
 // Dice overlap 2|A∩B|/(|A|+|B|) of two labels on the same grid (non-zero = inside).
 double dice(const LabelImage& a, const LabelImage& b);
 
-// `label` resampled (nearest neighbour) onto the grid of `like`; for comparing labels
-// from grids of different orientation in physical space.
+// `label` resampled onto the grid of `like` (linear interpolation of the 0/1 values,
+// then the 0.5 level); for comparing labels from grids of different orientation.
 LabelImage::Pointer resample_label_like(const LabelImage& label, const LabelImage& like);
 
 }  // namespace vesica::segment
