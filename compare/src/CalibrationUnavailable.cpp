@@ -4,7 +4,7 @@
 
 namespace vesica::compare {
 
-CalibrationResult calibrate_from_options(const CompareOptions&, const Curve&,
+CalibrationResult calibrate_from_options(const CompareOptions&, const RecordingAnalysis&,
                                          const ComparisonOptions&) {
   usage_error("--calibrate: this build has no simulate library",
               "build vesica with simulate/ to calibrate");

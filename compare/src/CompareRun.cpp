@@ -88,7 +88,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   if (!o.calibrate.empty()) {
     PhaseTimer t(record, "calibrate");
     record.add_input(o.mesh);
-    calibration = calibrate_from_options(o, measured->filling, copt);
+    calibration = calibrate_from_options(o, *measured, copt);
   }
 
   ReportInputs in;

@@ -1,13 +1,15 @@
 #include "vesica/compare/PiecewiseLinear.h"
 
 #include <algorithm>
-#include <numeric>
+#include <cmath>
 
 namespace vesica::compare {
 
 PiecewiseLinear::PiecewiseLinear(const std::vector<double>& x, const std::vector<double>& y) {
-  std::vector<std::size_t> order(std::min(x.size(), y.size()));
-  std::iota(order.begin(), order.end(), 0);
+  // non-finite samples (a diverged simulation step) carry no information
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i)
+    if (std::isfinite(x[i]) && std::isfinite(y[i])) order.push_back(i);
   std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return x[a] < x[b]; });
   std::size_t count = 0;
   for (std::size_t i : order) {
@@ -23,6 +25,7 @@ PiecewiseLinear::PiecewiseLinear(const std::vector<double>& x, const std::vector
 }
 
 double PiecewiseLinear::operator()(double x) const {
+  if (x_.empty()) return std::nan("");
   if (x <= x_.front()) return y_.front();
   if (x >= x_.back()) return y_.back();
   const auto it = std::upper_bound(x_.begin(), x_.end(), x);

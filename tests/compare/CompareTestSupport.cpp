@@ -2,11 +2,22 @@
 
 #include <vtkAppendFilter.h>
 #include <vtkCellData.h>
+#include <vtkCleanPolyData.h>
+#include <vtkDiscreteFlyingEdges3D.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkQuadricDecimation.h>
 #include <vtkSphereSource.h>
+#include <vtkStringArray.h>
+#include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkWindowedSincPolyDataFilter.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 namespace vesica::test {
@@ -33,6 +44,47 @@ void write_stress_sphere(const std::filesystem::path& vtu) {
   writer->SetFileName(vtu.c_str());
   writer->SetInputData(grid->GetOutput());
   writer->Write();
+}
+
+long write_label_surface(const std::filesystem::path& nifti, const std::filesystem::path& vtp,
+                         int target_triangles) {
+  vtkNew<vtkNIFTIImageReader> reader;
+  reader->SetFileName(nifti.c_str());
+  vtkNew<vtkDiscreteFlyingEdges3D> edges;
+  edges->SetInputConnection(reader->GetOutputPort());
+  edges->SetValue(0, 1);
+  edges->ComputeNormalsOff();
+  vtkNew<vtkWindowedSincPolyDataFilter> smooth;
+  smooth->SetInputConnection(edges->GetOutputPort());
+  smooth->SetNumberOfIterations(20);
+  smooth->SetPassBand(0.05);
+  smooth->NormalizeCoordinatesOn();
+  smooth->Update();
+  const double keep = static_cast<double>(target_triangles) /
+                      static_cast<double>(smooth->GetOutput()->GetNumberOfCells());
+  vtkNew<vtkQuadricDecimation> decimate;
+  decimate->SetInputConnection(smooth->GetOutputPort());
+  decimate->SetTargetReduction(std::max(0.0, 1.0 - keep));
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(decimate->GetOutputPort());
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(clean->GetOutputPort());
+  vtkNew<vtkPolyDataNormals> normals;
+  normals->SetInputConnection(triangles->GetOutputPort());
+  normals->ConsistencyOn();
+  normals->AutoOrientNormalsOn();
+  normals->SplittingOff();
+  normals->Update();
+  vtkPolyData* out = normals->GetOutput();
+  vtkNew<vtkStringArray> units;
+  units->SetName("units");
+  units->InsertNextValue("mm");
+  out->GetFieldData()->AddArray(units);
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetFileName(vtp.c_str());
+  writer->SetInputData(out);
+  writer->Write();
+  return out->GetNumberOfCells();
 }
 
 }  // namespace vesica::test

@@ -47,4 +47,10 @@ inline std::string compare_exe() {
 // grows with height, written as .vtu.
 void write_stress_sphere(const std::filesystem::path& vtu);
 
+// The closed surface of a label map (label 1) as a .vtp in mm with field data units = mm:
+// discrete flying edges, windowed-sinc smoothing, quadric decimation to about
+// `target_triangles`, consistently outward normals. Returns the triangle count.
+long write_label_surface(const std::filesystem::path& nifti, const std::filesystem::path& vtp,
+                         int target_triangles);
+
 }  // namespace vesica::test

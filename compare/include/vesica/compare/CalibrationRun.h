@@ -4,10 +4,12 @@
 #include "vesica/compare/CalibrationResult.h"
 #include "vesica/compare/CompareRun.h"
 #include "vesica/compare/ModelComparison.h"
+#include "vesica/compare/RecordingAnalysis.h"
 
 namespace vesica::compare {
 
-CalibrationResult calibrate_from_options(const CompareOptions& options, const Curve& measured,
+CalibrationResult calibrate_from_options(const CompareOptions& options,
+                                         const RecordingAnalysis& measured,
                                          const ComparisonOptions& comparison);
 
 }  // namespace vesica::compare
