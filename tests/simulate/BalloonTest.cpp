@@ -87,9 +87,9 @@ TEST(Balloon, PressureControlMatchesAnalyticCurveAndLaplace) {
     EXPECT_NEAR(c.pressure_pa, incompressible_pressure(l, H, R, mu), 0.01 * c.pressure_pa)
         << "λ = " << l;
     if (s == steps) {
-      std::string log;
-      for (double r : report.residual_norms) log += " " + std::to_string(r);
-      std::cout << "[ balloon ] relative residuals of the last step:" << log << std::endl;
+      std::cout << "[ balloon ] relative residuals of the last step:" << std::scientific;
+      for (double r : report.residual_norms) std::cout << " " << r;
+      std::cout << std::defaultfloat << std::endl;
       // Quadratic convergence: once below 1e-3, each residual is about the square of the
       // previous one (allow a factor 100 on the square).
       for (std::size_t k = 1; k + 1 < report.residual_norms.size(); ++k) {

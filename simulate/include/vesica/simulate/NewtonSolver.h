@@ -27,7 +27,7 @@ struct CavityEquation {
 };
 
 struct NewtonOptions {
-  int max_iterations = 25;
+  int max_iterations = 15;
   double residual_tolerance = 1e-9;   // |r| / force scale
   double increment_tolerance = 1e-8;  // |Δu|∞ / model size
   double volume_tolerance = 1e-12;    // |c| / V
