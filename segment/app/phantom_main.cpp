@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     spec.shape = shape == "sphere" ? seg::PhantomShape::Sphere : seg::PhantomShape::Ellipsoid;
     spec.orientation =
         orientation == "axial" ? seg::PhantomOrientation::Axial : seg::PhantomOrientation::Oblique;
-    vesica::StageRecord record("vesica-phantom", argc - 1, argv + 1);
+    vesica::StageRecord record("vesica-phantom", argc, argv);  // StageRecord drops argv[0] itself
     record.parameters() = {{"bladder_ml", spec.bladder_ml},
                            {"spacing_mm", spec.spacing_mm},
                            {"fov_mm", fov},

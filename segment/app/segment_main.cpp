@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
     if (!(p.lower_hu < p.upper_hu)) vesica::usage_error("--lower-hu must be below --upper-hu");
     p.seed_mm = parse_seed(seed_text);
 
-    vesica::StageRecord record("vesica-segment", argc - 1, argv + 1);
+    vesica::StageRecord record("vesica-segment", argc, argv);  // StageRecord drops argv[0] itself
     seg::Volume volume;
     {
       vesica::PhaseTimer t(record, "read");

@@ -68,8 +68,8 @@ MaterialSpec material_spec(const Cli& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{
-      "vesica-simulate: cystometric filling and voiding of the bladder wall (level-1 FSI)"};
+  CLI::App app{"Cystometric filling and voiding of the bladder wall (level-1 FSI)",
+               "vesica-simulate"};
   CommonOptions common;
   Cli c;
   CystometryProtocol& p = c.protocol;
