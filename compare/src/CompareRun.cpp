@@ -58,7 +58,7 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
 
 int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, char** argv) {
   validate(o);
-  StageRecord record("vesica-compare", argc - 1, argv + 1);
+  StageRecord record("vesica-compare", argc, argv);  // StageRecord drops argv[0] itself
   ReaderOptions measured_reader;
   measured_reader.columns = parse_column_map(o.columns);
   measured_reader.pressure_unit = o.pressure_unit;
