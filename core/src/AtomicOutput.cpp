@@ -14,6 +14,15 @@ namespace fs = std::filesystem;
 namespace vesica {
 namespace {
 
+// "out/ct/" names the folder "out/ct": drop trailing separators so that the temporary is a
+// sibling of the folder, not a file inside it.
+fs::path without_trailing_separator(const fs::path& p) {
+  fs::path t = p.lexically_normal();
+  while (!t.empty() && !t.has_filename() && t.has_parent_path() && t != t.root_path())
+    t = t.parent_path();
+  return t;
+}
+
 void fsync_path(const fs::path& p) {
   int fd = ::open(p.c_str(), O_RDONLY);
   if (fd < 0) return;
@@ -30,7 +39,8 @@ void fsync_tree(const fs::path& p) {
 
 }  // namespace
 
-fs::path temporary_sibling(const fs::path& target) {
+fs::path temporary_sibling(const fs::path& target_given) {
+  const fs::path target = without_trailing_separator(target_given);
   static std::atomic<unsigned> counter{0};
   const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
   const std::string prefix = ".tmp-" + std::to_string(::getpid()) + "-" +
@@ -39,7 +49,9 @@ fs::path temporary_sibling(const fs::path& target) {
   return target.parent_path() / (prefix + target.filename().string());
 }
 
-void write_atomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+void write_atomically(const fs::path& target_given,
+                      const std::function<void(const fs::path&)>& write) {
+  const fs::path target = without_trailing_separator(target_given);
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
   const fs::path tmp = temporary_sibling(target);
   try {

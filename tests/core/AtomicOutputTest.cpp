@@ -54,3 +54,14 @@ TEST(AtomicOutput, WritesFolders) {
   }
   EXPECT_EQ(read(target / "x.txt"), "1");
 }
+
+TEST(AtomicOutput, FolderNamedWithTrailingSlash) {
+  const fs::path dir = vesica::test::scratch_dir("atomic-slash");
+  const fs::path target = dir / "ct" / "";  // "…/ct/" as typed on a command line
+  EXPECT_EQ(vesica::temporary_sibling(target).parent_path(), dir);
+  vesica::write_atomically(target, [&](const fs::path& tmp) {
+    fs::create_directories(tmp);
+    std::ofstream(tmp / "slice.dcm") << "x";
+  });
+  EXPECT_EQ(read(dir / "ct" / "slice.dcm"), "x");
+}
