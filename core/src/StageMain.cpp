@@ -55,7 +55,10 @@ std::string default_manifest_path(const CommonOptions& options, const std::strin
     fs::path r(options.report);
     return (r.parent_path() / (r.stem().string() + ".manifest.json")).string();
   }
-  return output + ".manifest.json";
+  // "ct/" is the folder "ct": its manifest goes beside it, not inside it.
+  fs::path out = fs::path(output).lexically_normal();
+  if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();
+  return out.string() + ".manifest.json";
 }
 
 }  // namespace vesica
