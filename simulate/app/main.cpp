@@ -8,6 +8,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/StageMain.h"
+#include "vesica/core/Progress.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
@@ -157,6 +158,8 @@ int main(int argc, char** argv) {
     options.output_dir = c.output;
     options.write_series = !c.no_series;
     options.reference = c.wall.reference;
+    Progress progress("simulate");  // silent with --json or off a terminal
+    options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     auto& params = record.parameters();
     params["material"] = {{"name", spec.name}, {"params_si", spec.params}};
     params["mesh"] = c.mesh;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <sstream>
 
@@ -95,9 +96,25 @@ class CystometryDriver {
     row.flow_ml_s = units::mls_from_m3s(run_.outflow());
     row.voided_ml = units::ml_from_m3(run_.voided());
     result_.history.push_back(row);
+    report_progress(row);
     const double V_expected = run_.initial_volume() + run_.infused() - run_.voided();
     mass_error_ = std::max(mass_error_, std::abs(run_.volume() - V_expected) / V_expected);
     frame(false);
+  }
+
+  void report_progress(const HistoryRow& row) const {
+    if (!options_.on_progress) return;
+    char step[64];
+    if (!voiding_) {
+      const double span = protocol_.capacity_ml - protocol_.start_ml;
+      const double done = span > 0.0 ? std::clamp(row.infused_ml / span, 0.0, 1.0) : 1.0;
+      std::snprintf(step, sizeof step, "filling %.0f ml", row.volume_ml);
+      options_.on_progress(step, 0.8 * done);
+    } else {
+      const double total = row.voided_ml + row.volume_ml;
+      std::snprintf(step, sizeof step, "voiding %.0f ml", row.volume_ml);
+      options_.on_progress(step, 0.8 + 0.2 * (total > 0.0 ? row.voided_ml / total : 1.0));
+    }
   }
 
   void frame(bool force) {

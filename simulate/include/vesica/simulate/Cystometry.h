@@ -12,6 +12,7 @@
 // RunOptions{} writes nothing (fast repeated calls); set output_dir for files, and
 // filling_only to stop at capacity.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,9 @@ struct RunOptions {
   int threads = 2;
   ReferenceState reference = ReferenceState::Scale;
   NewtonOptions newton;
+  // Called after every step with what is being done ("filling 120 ml") and the fraction
+  // of the protocol done (filling up to 0.8, voiding after); the executable draws it.
+  std::function<void(const std::string& step, double fraction)> on_progress;
 };
 
 struct HistoryRow {
