@@ -51,8 +51,11 @@ std::size_t count(const Mask& m) {
   return static_cast<std::size_t>(std::count_if(p, p + n, [](auto v) { return v != 0; }));
 }
 
-Mask::Pointer erode(const Mask& m, double radius_mm) {
-  auto f = itk::BinaryErodeImageFilter<Mask, Mask, Ball>::New();
+namespace {
+// Erosion and dilation differ only in the ITK filter: a ball of radius_mm on the 0/1 mask.
+template <template <class, class, class> class MorphologyFilter>
+Mask::Pointer apply_ball(const Mask& m, double radius_mm) {
+  auto f = MorphologyFilter<Mask, Mask, Ball>::New();
   f->SetInput(&m);
   f->SetKernel(ball_mm(m, radius_mm));
   f->SetForegroundValue(1);
@@ -60,15 +63,14 @@ Mask::Pointer erode(const Mask& m, double radius_mm) {
   f->Update();
   return f->GetOutput();
 }
+}  // namespace
+
+Mask::Pointer erode(const Mask& m, double radius_mm) {
+  return apply_ball<itk::BinaryErodeImageFilter>(m, radius_mm);
+}
 
 Mask::Pointer dilate(const Mask& m, double radius_mm) {
-  auto f = itk::BinaryDilateImageFilter<Mask, Mask, Ball>::New();
-  f->SetInput(&m);
-  f->SetKernel(ball_mm(m, radius_mm));
-  f->SetForegroundValue(1);
-  f->SetBackgroundValue(0);
-  f->Update();
-  return f->GetOutput();
+  return apply_ball<itk::BinaryDilateImageFilter>(m, radius_mm);
 }
 
 Mask::Pointer threshold(const Float& image, double lower, double upper) {
