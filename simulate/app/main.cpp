@@ -7,8 +7,8 @@
 
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
-#include "vesica/core/StageMain.h"
 #include "vesica/core/Progress.h"
+#include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
