@@ -52,6 +52,7 @@ CavityRun::CavityRun(const WallModel& wall, const Material& material,
   loads_.support_stiffness = protocol.support_kpa_per_mm * 1e3 / 1e-3;  // kPa/mm → Pa/m
   set_time_loads(0.0);
   volume_ = V_reference_ = enclosed_volume(wall, x_);
+  reference_rate_m3_s_ = units::m3s_from_ml_per_min(protocol.fill_rate_ml_min);
 }
 
 void CavityRun::set_time_loads(double t) {
@@ -80,6 +81,12 @@ bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_
   const double p_saved = loads_.inside.p0;
   set_time_loads(t_ + dt);
   loads_.dt_s = dt;
+  // Drag towards the last converged wall; a volume step without time (reference to
+  // start volume) takes the time the infusion rate would need for it.
+  const double drag_dt =
+      dt > 0.0 ? dt : std::abs(V_target_no_flow - volume_) / reference_rate_m3_s_;
+  loads_.drag_stiffness = drag_dt > 0.0 ? protocol_.wall_drag_pa_s_per_m / drag_dt : 0.0;
+  loads_.drag_anchor = x_saved;
   CavityEquation cavity;
   cavity.volume_control = true;
   constexpr double theta = 0.5;  // trapezoidal outflow: second order, exact bookkeeping

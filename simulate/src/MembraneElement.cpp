@@ -53,13 +53,10 @@ MembraneResponse membrane_response(const MembraneGeometry& geo,
   const Eigen::Vector3d S_voigt(S(0, 0), S(1, 1), S(0, 1));
   r.f_int = HA * B.transpose() * S_voigt;
   r.K = HA * B.transpose() * r.stress.D * B;
-  // Geometric stiffness from the tensile part of S only: a compressed membrane wrinkles
-  // (physics.md §1), and its negative geometric stiffness would make Newton stall there.
-  // Exact (consistent) while the wall is in tension, which is the case in every check.
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal(S);
-  const Eigen::Matrix2d S_tension = principal.eigenvectors() *
-                                    principal.eigenvalues().cwiseMax(0.0).asDiagonal() *
-                                    principal.eigenvectors().transpose();
+  // Geometric stiffness of the full S: the consistent tangent, also where the wall is in
+  // compression (there it is negative; the tissue drag of the cavity run keeps the
+  // system well-posed, CavityRun.cpp).
+  const Eigen::Matrix2d& S_tension = S;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
       const double kg = HA * geo.dN.col(a).dot(S_tension * geo.dN.col(b));

@@ -166,11 +166,20 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     }
     out.volume += element_V_[e];
   }
-  // Wall weight (dead load) and support springs pulling back to the reference position.
+  // Wall weight (dead load), support springs pulling back to the reference position and
+  // the inertia of a dynamic step (a spring c M towards x̂, BossakNewmark.h).
+  const bool dynamic = loads.inertia.coefficient > 0.0;
+  const bool dragged = loads.drag_stiffness > 0.0 && loads.drag_anchor.size() == nn;
   for (std::size_t n = 0; n < nn; ++n) {
     f_ext.segment<3>(3 * n) += loads.wall_density * node_mass_[n] * loads.wall_gravity;
     if (n < wall_.support.size() && wall_.support[n])
       f_int.segment<3>(3 * n) += loads.support_stiffness * node_area_[n] * (x[n] - wall_.nodes[n]);
+    if (dynamic)
+      f_int.segment<3>(3 * n) += loads.inertia.coefficient * loads.wall_density * node_mass_[n] *
+                                 (x[n] - loads.inertia.target[n]);
+    if (dragged)
+      f_int.segment<3>(3 * n) +=
+          loads.drag_stiffness * node_area_[n] * (x[n] - loads.drag_anchor[n]);
   }
   out.full_residual = f_int - f_ext;
   out.force_scale = std::max(f_int.norm(), f_ext.norm());
@@ -193,12 +202,16 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     for (int s = 0; s < 81; ++s)
       if (slots[s] >= 0) values[slots[s]] += k[s];
   }
-  if (loads.support_stiffness > 0.0)
-    for (std::size_t n = 0; n < nn; ++n)
-      if (n < wall_.support.size() && wall_.support[n])
-        for (int i = 0; i < 3; ++i)
-          if (dof_[3 * n + i] >= 0)
-            values[diagonal_slot_[dof_[3 * n + i]]] += loads.support_stiffness * node_area_[n];
+  for (std::size_t n = 0; n < nn; ++n) {
+    const bool supported = n < wall_.support.size() && wall_.support[n];
+    const double k =
+        (supported ? loads.support_stiffness * node_area_[n] : 0.0) +
+        (dynamic ? loads.inertia.coefficient * loads.wall_density * node_mass_[n] : 0.0) +
+        (dragged ? loads.drag_stiffness * node_area_[n] : 0.0);
+    if (k == 0.0) continue;
+    for (int i = 0; i < 3; ++i)
+      if (dof_[3 * n + i] >= 0) values[diagonal_slot_[dof_[3 * n + i]]] += k;
+  }
 }
 
 void MembraneProblem::commit() {

@@ -16,16 +16,76 @@ struct NewtonSolver::Factorization {
 
 NewtonSolver::NewtonSolver(MembraneProblem& problem, NewtonOptions options)
     : problem_(problem), options_(options), lu_(std::make_shared<Factorization>()) {
+  const WallModel& wall = problem.wall();
   Eigen::AlignedBox3d box;
-  for (const auto& p : problem.wall().nodes) box.extend(p);
+  for (const auto& p : wall.nodes) box.extend(p);
   size_ = box.diagonal().norm();
+  std::vector<double> node_area(wall.node_count(), 0.0);
+  double edges = 0.0;
+  for (const auto& t : wall.triangles) {
+    const Eigen::Vector3d &a = wall.nodes[t[0]], &b = wall.nodes[t[1]], &c = wall.nodes[t[2]];
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    for (int n : t) node_area[n] += area / 3.0;
+    edges += (b - a).norm() + (c - b).norm() + (a - c).norm();
+  }
+  mean_edge_ = wall.triangles.empty() ? size_ : edges / (3.0 * wall.triangle_count());
+  foundation_area_.resize(static_cast<Eigen::Index>(problem.free_dof_count()));
+  for (std::size_t g = 0; g < problem.dof_map().size(); ++g)
+    if (problem.dof_map()[g] >= 0) foundation_area_(problem.dof_map()[g]) = node_area[g / 3];
+}
+
+// One bordered step with K + η A: returns false when the tangent cannot be factorized.
+bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta,
+                                 Eigen::VectorXd& du, double& dp, std::string& failure) {
+  WallAssembly& A = assembly_;
+  const double added = eta - eta_in_K_;
+  if (added != 0.0) {
+    for (Eigen::Index d = 0; d < foundation_area_.size(); ++d)
+      A.K.coeffRef(d, d) += added * foundation_area_(d);
+    eta_in_K_ = eta;
+  }
+  if (!lu_->analyzed) {
+    lu_->lu.analyzePattern(A.K);
+    lu_->analyzed = true;
+  }
+  lu_->lu.factorize(A.K);
+  if (lu_->lu.info() != Eigen::Success) {
+    failure = "singular tangent matrix";
+    return false;
+  }
+  const Eigen::VectorXd minus_r = -A.residual, minus_dr_dp0 = -A.dr_dp0;
+  const Eigen::VectorXd u_r = lu_->lu.solve(minus_r);
+  const Eigen::VectorXd u_p = lu_->lu.solve(minus_dr_dp0);
+  dp = 0.0;
+  if (cavity.volume_control) {
+    const double denom = A.dV_du.dot(u_p) + dc_dp;
+    if (denom == 0.0) {
+      failure = "singular cavity equation";
+      return false;
+    }
+    dp = (-c - A.dV_du.dot(u_r)) / denom;
+  } else {
+    dp = -c;
+  }
+  du = u_r + dp * u_p;
+  if (!du.allFinite()) {
+    failure = "increment is not finite";
+    return false;
+  }
+  return true;
 }
 
 NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
                                  std::vector<Eigen::Vector3d>& x) {
   NewtonReport report;
   double last_increment = INFINITY;
-  for (int it = 0; it <= options_.max_iterations; ++it) {
+  // Regularized iterations are pseudo-time steps towards equilibrium: they extend the
+  // budget, up to four times the plain Newton limit.
+  auto limit = [&] {
+    return std::min(options_.max_iterations + report.regularized_iterations,
+                    4 * options_.max_iterations);
+  };
+  for (int it = 0; it <= limit(); ++it) {
     try {
       problem_.assemble(x, loads, true, assembly_);
     } catch (const std::runtime_error& e) {
@@ -64,45 +124,33 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
       report.converged = true;
       return report;
     }
-    if (it == options_.max_iterations) break;
+    if (it == limit()) break;
     if (it >= 3 && r_rel > 1e3 * report.residual_norms[1] && r_rel > 1e-3) {
       report.failure = "Newton iteration diverges";
       return report;
     }
     if (problem_.free_dof_count() == 0) break;
-    if (!lu_->analyzed) {
-      lu_->lu.analyzePattern(A.K);
-      lu_->analyzed = true;
-    }
-    lu_->lu.factorize(A.K);
-    if (lu_->lu.info() != Eigen::Success) {
-      report.failure = "singular tangent matrix";
-      return report;
-    }
-    const Eigen::VectorXd minus_r = -A.residual, minus_dr_dp0 = -A.dr_dp0;
-    const Eigen::VectorXd u_r = lu_->lu.solve(minus_r);
-    const Eigen::VectorXd u_p = lu_->lu.solve(minus_dr_dp0);
+    // Newton step; too long a step is recomputed on a stiffer foundation (see header).
+    const double max_move = options_.max_move_per_edge * mean_edge_;
+    const double stiffness_scale =
+        A.K.diagonal().cwiseAbs().sum() / std::max(foundation_area_.sum(), 1e-300);
+    double eta = eta_;
+    eta_in_K_ = 0.0;
+    Eigen::VectorXd du;
     double dp = 0.0;
-    if (cavity.volume_control) {
-      const double denom = A.dV_du.dot(u_p) + dc_dp;
-      if (denom == 0.0) {
-        report.failure = "singular cavity equation";
-        return report;
-      }
-      dp = (-c - A.dV_du.dot(u_r)) / denom;
-    } else {
-      dp = -c;
+    for (int attempt = 0;; ++attempt) {
+      if (!bordered_step(cavity, c, dc_dp, eta, du, dp, report.failure)) return report;
+      const double move = du.size() ? du.cwiseAbs().maxCoeff() : 0.0;
+      if (max_move <= 0.0 || move <= max_move || attempt == 12) break;
+      eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;
     }
-    const Eigen::VectorXd du = u_r + dp * u_p;
-    if (!du.allFinite()) {
-      report.failure = "increment is not finite";
-      return report;
-    }
+    if (eta > 0.0) ++report.regularized_iterations;
+    eta_ = eta > 1e-9 * stiffness_scale ? 0.1 * eta : 0.0;
     problem_.apply_increment(du, x);
     loads.inside.p0 += dp;
     last_increment = du.size() ? du.cwiseAbs().maxCoeff() : 0.0;
   }
-  report.failure = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
+  report.failure = "no convergence in " + std::to_string(report.iterations) + " iterations";
   return report;
 }
 

@@ -73,6 +73,10 @@ struct CystometryProtocol {
   bool wall_weight = false;           // the wall's own weight (buoyant in the abdomen)
   double wall_density = 920.0;        // kg/m³
   double support_kpa_per_mm = 0.0;    // springs on the support region (kPa per mm)
+  // Viscous drag of the perivesical tissue on the wall (Pa·s/m): the drag pressure c·v is
+  // about 0.004 cmH2O at 50 ml/min, but it gives the slack wall of a scaled-down patient
+  // shape (excess area, no stiffness against unfolding) a unique position at every step.
+  double wall_drag_pa_s_per_m = 1e4;
   // Prestress reference: the imaged geometry is in equilibrium at this pressure.
   double image_pressure_cmh2o = 10.0;
 };

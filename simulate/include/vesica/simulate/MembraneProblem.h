@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include "vesica/simulate/BossakNewmark.h"
 #include "vesica/simulate/Material.h"
 #include "vesica/simulate/MembraneElement.h"
 #include "vesica/simulate/PressureLoad.h"
@@ -25,6 +26,14 @@ struct WallLoads {
   double support_stiffness = 0.0;  // springs of the support region, Pa/m (per unit area)
   double active_stress_pa = 0.0;   // detrusor T_a(t)
   double dt_s = 0.0;               // time step (viscoelastic history)
+  // Wall inertia of a dynamic step (BossakNewmark.h); empty coefficient = quasi-static.
+  InertiaTerm inertia;
+  // Viscous drag of the surrounding tissue, c (x - x_n) / Δt per unit reference area:
+  // a spring of stiffness c/Δt (Pa/m) towards the last converged positions x_n. It is
+  // what makes a slack or wrinkled wall (no stiffness against bending-like modes) a
+  // well-posed problem at every step; 0 = none.
+  double drag_stiffness = 0.0;               // c / Δt (Pa/m)
+  std::vector<Eigen::Vector3d> drag_anchor;  // x_n (m)
 };
 
 struct WallAssembly {

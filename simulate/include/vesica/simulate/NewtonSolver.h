@@ -7,6 +7,13 @@
 //   [K  ∂r/∂p0; ∂c/∂u  ∂c/∂p0] [Δu; Δp0] = -[r; c]
 // is solved by its Schur complement with one LU factorization of K (UMFPACK; K may be
 // indefinite past the limit point): Δu = u_r + Δp0 u_p, u_r = -K⁻¹ r, u_p = -K⁻¹ ∂r/∂p0.
+//
+// Globalization: near a stress-free or slack state K is (nearly) singular against
+// inextensional modes and the Newton step is far too long. Such a step is recomputed with
+// K + η A (an elastic foundation of η Pa/m on each node's reference area A, raised
+// tenfold until the step is short enough) — a pseudo-transient continuation: it changes
+// the path of the iteration, never the equations solved, and η decays tenfold per
+// accepted iteration so that the final iterations are plain Newton steps again.
 #include <functional>
 #include <memory>
 #include <string>
@@ -31,11 +38,17 @@ struct NewtonOptions {
   double residual_tolerance = 1e-9;   // |r| / force scale
   double increment_tolerance = 1e-8;  // |Δu|∞ / model size
   double volume_tolerance = 1e-12;    // |c| / V
+  // Largest node move of one iteration, as a fraction of the mean reference edge. A
+  // stress-free or slack membrane has (nearly) no stiffness against bending-like modes,
+  // so a plain Newton step there moves nodes by orders of magnitude too far; a longer
+  // step is instead shortened by the elastic-foundation regularization below.
+  double max_move_per_edge = 0.5;  // 0 = off
 };
 
 struct NewtonReport {
   bool converged = false;
   int iterations = 0;
+  int regularized_iterations = 0;      // iterations that needed the foundation η > 0
   std::vector<double> residual_norms;  // relative, one per iteration (quadratic convergence)
   std::string failure;                 // why it did not converge
 };
@@ -53,12 +66,20 @@ class NewtonSolver {
   const WallAssembly& assembly() const { return assembly_; }
 
  private:
+  bool bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta,
+                     Eigen::VectorXd& du, double& dp, std::string& failure);
+
   MembraneProblem& problem_;
   NewtonOptions options_;
   WallAssembly assembly_;
   struct Factorization;
   std::shared_ptr<Factorization> lu_;
   double size_ = 1.0;
+  double mean_edge_ = 1.0;
+  // Reference area per free dof (m²): the elastic foundation η A adds to K's diagonal.
+  Eigen::VectorXd foundation_area_;
+  double eta_ = 0.0;       // foundation stiffness (Pa/m) carried over between iterations
+  double eta_in_K_ = 0.0;  // the part of it added to assembly_.K
 };
 
 }  // namespace vesica::simulate
