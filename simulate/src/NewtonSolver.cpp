@@ -3,15 +3,16 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/UmfPackSupport>
-
 #include "vesica/core/Log.h"
+#include "vesica/simulate/LinearSolver.h"
 
 namespace vesica::simulate {
 
 struct NewtonSolver::Factorization {
-  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu;
-  bool analyzed = false;
+  LinearSolver solver;
+  // The factorization holds a tangent of the last converged state (or of this solve):
+  // see the reuse rule in solve().
+  bool reusable = false;
 };
 
 NewtonSolver::NewtonSolver(MembraneProblem& problem, NewtonOptions options)
@@ -25,6 +26,8 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
                                  std::vector<Eigen::Vector3d>& x) {
   NewtonReport report;
   double last_increment = INFINITY;
+  bool reusable = lu_->reusable;
+  lu_->reusable = false;  // until this solve converges
   for (int it = 0; it <= options_.max_iterations; ++it) {
     try {
       problem_.assemble(x, loads, true, assembly_);
@@ -62,6 +65,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     }
     if (r_ok && c_ok && (it > 0 ? last_increment <= options_.increment_tolerance * size_ : true)) {
       report.converged = true;
+      lu_->reusable = reusable;
       return report;
     }
     if (it == options_.max_iterations) break;
@@ -70,18 +74,27 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
       return report;
     }
     if (problem_.free_dof_count() == 0) break;
-    if (!lu_->analyzed) {
-      lu_->lu.analyzePattern(A.K);
-      lu_->analyzed = true;
+    // Modified-Newton reuse: with the wall already in equilibrium (r_ok) only the cavity
+    // equation (first iteration of a step) or the increment test (last one) is unmet, the
+    // correction is small and the last tangent, from this solve or the converged state of
+    // the previous one, serves it as well as a new factorization would. Every other
+    // iteration factorizes its own tangent, which keeps the convergence quadratic.
+    if (!(r_ok && reusable)) {
+      if (!lu_->solver.factorize(A.K)) {
+        report.failure = "singular tangent matrix";
+        return report;
+      }
+      reusable = true;
     }
-    lu_->lu.factorize(A.K);
-    if (lu_->lu.info() != Eigen::Success) {
-      report.failure = "singular tangent matrix";
-      return report;
-    }
-    const Eigen::VectorXd minus_r = -A.residual, minus_dr_dp0 = -A.dr_dp0;
-    const Eigen::VectorXd u_r = lu_->lu.solve(minus_r);
-    const Eigen::VectorXd u_p = lu_->lu.solve(minus_dr_dp0);
+    // u_p is needed whenever p0 changes: always under volume control, under pressure
+    // control only until p0 equals the prescribed pressure.
+    const bool need_u_p = cavity.volume_control || c != 0.0;
+    Eigen::MatrixXd B(A.residual.size(), need_u_p ? 2 : 1);
+    B.col(0) = -A.residual;
+    if (need_u_p) B.col(1) = -A.dr_dp0;
+    const Eigen::MatrixXd U = lu_->solver.solve(B);
+    const auto u_r = U.col(0);
+    const Eigen::VectorXd u_p = need_u_p ? Eigen::VectorXd(U.col(1)) : Eigen::VectorXd();
     double dp = 0.0;
     if (cavity.volume_control) {
       const double denom = A.dV_du.dot(u_p) + dc_dp;
@@ -93,7 +106,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     } else {
       dp = -c;
     }
-    const Eigen::VectorXd du = u_r + dp * u_p;
+    const Eigen::VectorXd du = need_u_p ? Eigen::VectorXd(u_r + dp * u_p) : Eigen::VectorXd(u_r);
     if (!du.allFinite()) {
       report.failure = "increment is not finite";
       return report;
