@@ -23,10 +23,10 @@ namespace {
 // convergence can see (the residual floor is ~1e-12), while a hydrostatic gradient makes
 // K asymmetric by ρ g h / p ≫ 1e-14.
 constexpr double kSymmetryTolerance = 1e-14;
-// After K was found indefinite (volume control past the limit point), this many LU
-// factorizations are done before Cholesky is tried again, so a failed Cholesky attempt
-// does not add to every iteration.
-constexpr int kSkipsAfterIndefinite = 8;
+// After K was found indefinite (volume control past the limit point), LU only for the
+// next 8 factorizations, doubling up to 128 while K stays indefinite: a failed Cholesky
+// attempt then costs a few per cent, and a K that is definite again is noticed soon.
+constexpr int kFirstSkips = 8, kMaxSkips = 128;
 
 // UMFPACK allocates and frees its multi-megabyte numeric workspace at every factorization.
 // glibc serves such blocks by mmap and returns them to the system at free, so each
@@ -128,9 +128,10 @@ bool LinearSolver::factorize(const Eigen::SparseMatrix<double>& K) {
     b.llt.factorize(K);
     if (b.llt.info() == Eigen::Success) {
       factorized_ = used_cholesky_ = true;
+      last_skips_ = 0;
       return true;
     }
-    cholesky_skips_ = kSkipsAfterIndefinite;
+    cholesky_skips_ = last_skips_ = std::clamp(2 * last_skips_, kFirstSkips, kMaxSkips);
   }
   if (!b.lu_analyzed) {
     b.lu.analyzePattern(K);

@@ -40,6 +40,7 @@ class LinearSolver {
   std::vector<int> transpose_slot_;  // entry k = (i, j) → index of (j, i)
   bool factorized_ = false, used_cholesky_ = false;
   int cholesky_skips_ = 0;  // LU-only factorizations left after K was found indefinite
+  int last_skips_ = 0;      // the last such count (grows while K stays indefinite)
 };
 
 }  // namespace vesica::simulate
