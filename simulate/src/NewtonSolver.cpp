@@ -3,15 +3,16 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/UmfPackSupport>
-
 #include "vesica/core/Log.h"
+#include "vesica/simulate/LinearSolver.h"
 
 namespace vesica::simulate {
 
 struct NewtonSolver::Factorization {
-  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu;
-  bool analyzed = false;
+  LinearSolver solver;
+  // The factorization holds a tangent of the last converged state (or of this solve):
+  // see the reuse rule in solve().
+  bool reusable = false;
 };
 
 NewtonSolver::NewtonSolver(MembraneProblem& problem, NewtonOptions options)
@@ -34,9 +35,9 @@ NewtonSolver::NewtonSolver(MembraneProblem& problem, NewtonOptions options)
     if (problem.dof_map()[g] >= 0) foundation_area_(problem.dof_map()[g]) = node_area[g / 3];
 }
 
-// One bordered step with K + η A: returns false when the tangent cannot be factorized.
-bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta,
-                                 Eigen::VectorXd& du, double& dp, std::string& failure) {
+bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double dc_dp,
+                                 double eta, bool reuse, Eigen::VectorXd& du, double& dp,
+                                 std::string& failure) {
   WallAssembly& A = assembly_;
   const double added = eta - eta_in_K_;
   if (added != 0.0) {
@@ -44,30 +45,31 @@ bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double 
       A.K.coeffRef(d, d) += added * foundation_area_(d);
     eta_in_K_ = eta;
   }
-  if (!lu_->analyzed) {
-    lu_->lu.analyzePattern(A.K);
-    lu_->analyzed = true;
+  if (!reuse || added != 0.0) {
+    if (!lu_->solver.factorize(A.K)) {
+      failure = "singular tangent matrix";
+      return false;
+    }
   }
-  lu_->lu.factorize(A.K);
-  if (lu_->lu.info() != Eigen::Success) {
-    failure = "singular tangent matrix";
-    return false;
-  }
-  const Eigen::VectorXd minus_r = -A.residual, minus_dr_dp0 = -A.dr_dp0;
-  const Eigen::VectorXd u_r = lu_->lu.solve(minus_r);
-  const Eigen::VectorXd u_p = lu_->lu.solve(minus_dr_dp0);
+  // u_p is needed whenever p0 changes: always under volume control, under pressure
+  // control only until p0 equals the prescribed pressure.
+  const bool need_u_p = cavity.volume_control || c != 0.0;
+  Eigen::MatrixXd B(A.residual.size(), need_u_p ? 2 : 1);
+  B.col(0) = -A.residual;
+  if (need_u_p) B.col(1) = -A.dr_dp0;
+  const Eigen::MatrixXd U = lu_->solver.solve(B);
   dp = 0.0;
   if (cavity.volume_control) {
-    const double denom = A.dV_du.dot(u_p) + dc_dp;
+    const double denom = A.dV_du.dot(U.col(1)) + dc_dp;
     if (denom == 0.0) {
       failure = "singular cavity equation";
       return false;
     }
-    dp = (-c - A.dV_du.dot(u_r)) / denom;
+    dp = (-c - A.dV_du.dot(U.col(0))) / denom;
   } else {
     dp = -c;
   }
-  du = u_r + dp * u_p;
+  du = need_u_p ? Eigen::VectorXd(U.col(0) + dp * U.col(1)) : Eigen::VectorXd(U.col(0));
   if (!du.allFinite()) {
     failure = "increment is not finite";
     return false;
@@ -79,6 +81,8 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
                                  std::vector<Eigen::Vector3d>& x) {
   NewtonReport report;
   double last_increment = INFINITY;
+  bool reusable = lu_->reusable;
+  lu_->reusable = false;  // until this solve converges
   // Regularized iterations are pseudo-time steps towards equilibrium: they extend the
   // budget, up to four times the plain Newton limit.
   auto limit = [&] {
@@ -122,6 +126,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     }
     if (r_ok && c_ok && (it > 0 ? last_increment <= options_.increment_tolerance * size_ : true)) {
       report.converged = true;
+      lu_->reusable = reusable;
       return report;
     }
     if (it == limit()) break;
@@ -138,8 +143,16 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     eta_in_K_ = 0.0;
     Eigen::VectorXd du;
     double dp = 0.0;
+    // Modified-Newton reuse: with the wall already in equilibrium (r_ok) only the cavity
+    // equation (first iteration of a step) or the increment test (last one) is unmet, the
+    // correction is small and the last tangent, from this solve or the converged state of
+    // the previous one, serves it as well as a new factorization would. Every other
+    // iteration factorizes its own tangent, which keeps the convergence quadratic.
+    const bool reuse = r_ok && reusable && eta == 0.0;
     for (int attempt = 0;; ++attempt) {
-      if (!bordered_step(cavity, c, dc_dp, eta, du, dp, report.failure)) return report;
+      if (!bordered_step(cavity, c, dc_dp, eta, reuse && attempt == 0, du, dp, report.failure))
+        return report;
+      reusable = true;
       const double move = du.size() ? du.cwiseAbs().maxCoeff() : 0.0;
       if (max_move <= 0.0 || move <= max_move || attempt == 12) break;
       eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;

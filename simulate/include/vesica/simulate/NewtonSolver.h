@@ -5,8 +5,10 @@
 //   c = V(u) - V_base + θ Δt Q_out(p0)
 // (V_base = V_n + Δt Q_in - (1-θ) Δt Q_out,n). The bordered system
 //   [K  ∂r/∂p0; ∂c/∂u  ∂c/∂p0] [Δu; Δp0] = -[r; c]
-// is solved by its Schur complement with one LU factorization of K (UMFPACK; K may be
-// indefinite past the limit point): Δu = u_r + Δp0 u_p, u_r = -K⁻¹ r, u_p = -K⁻¹ ∂r/∂p0.
+// is solved by its Schur complement with one factorization of K (LinearSolver.h; K may
+// be indefinite past the limit point): Δu = u_r + Δp0 u_p, u_r = -K⁻¹ r, u_p = -K⁻¹ ∂r/∂p0.
+// An iteration whose wall residual already meets its tolerance reuses the last
+// factorization instead of a new one (modified Newton for that small correction only).
 //
 // Globalization: near a stress-free or slack state K is (nearly) singular against
 // inextensional modes and the Newton step is far too long. Such a step is recomputed with
@@ -66,8 +68,9 @@ class NewtonSolver {
   const WallAssembly& assembly() const { return assembly_; }
 
  private:
+  // One bordered step with K + η A; refactorizes unless `reuse` and η is unchanged.
   bool bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta,
-                     Eigen::VectorXd& du, double& dp, std::string& failure);
+                     bool reuse, Eigen::VectorXd& du, double& dp, std::string& failure);
 
   MembraneProblem& problem_;
   NewtonOptions options_;
