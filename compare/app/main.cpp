@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--mu-kpa", o.simulation.mu_kpa, "Shear modulus to start the calibration from")
       ->capture_default_str();
-  app.add_option("--k-kpa", o.simulation.k_kpa, "Bulk modulus of the wall in the calibration")
+  app.add_option("--k-kpa", o.simulation.k_kpa, "Bulk modulus of the wall in the calibration (default: 1000 x mu)")
       ->capture_default_str();
   app.add_option("--thickness-mm", o.simulation.thickness_mm, "Wall thickness in the calibration")
       ->capture_default_str();

@@ -42,7 +42,10 @@ namespace {
 void apply(const ParameterSpec& s, double v, simulate::MaterialSpec& m,
            simulate::CystometryProtocol& p) {
   if (s.name == "mu") m.params["mu"] = v * 1e3;
-  if (s.name == "k") m.params["K"] = v * 1e3;
+  if (s.name == "k") {
+    m.params.erase("K_per_mu");  // a fitted K no longer follows mu
+    m.params["K"] = v * 1e3;
+  }
   if (s.name == "beta") m.params["beta"] = v;
   if (s.name == "tau") m.params["tau"] = v;
   if (s.name == "k1") m.params["k1"] = v;

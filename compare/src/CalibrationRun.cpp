@@ -61,7 +61,11 @@ CalibrationResult calibrate_from_options(const CompareOptions& o,
   wall_options.residual_ml = o.simulation.start_ml;
   pb.wall = simulate::load_wall(o.mesh, wall_options);
   pb.material.name = material_for(pb.parameters);
-  pb.material.params = {{"mu", o.simulation.mu_kpa * 1e3}, {"K", o.simulation.k_kpa * 1e3}};
+  pb.material.params = {{"mu", o.simulation.mu_kpa * 1e3}};
+  if (o.simulation.k_kpa > 0.0)
+    pb.material.params["K"] = o.simulation.k_kpa * 1e3;
+  else
+    pb.material.params["K_per_mu"] = 1e3;  // nearly incompressible, as vesica-simulate
   pb.protocol.start_ml = o.simulation.start_ml;
   // Without gravity: a stress-free membrane at the start volume carries its own weight
   // with no stiffness (no equilibrium), and the measured Pdet is referred to the

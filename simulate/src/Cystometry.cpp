@@ -150,7 +150,7 @@ class CystometryDriver {
       dt = std::min(dt, (target - run_.infused()) / q_in);
       const int its = run_.step(dt, q_in, false);
       record();
-      dt = its <= 4 ? std::min(1.5 * dt, dt_max) : dt;
+      dt = its <= 6 ? std::min(1.5 * dt, dt_max) : dt;
     }
   }
 
@@ -165,6 +165,16 @@ class CystometryDriver {
   }
 
   void void_bladder() {
+    // Without detrusor contraction or straining nothing raises Pves to the opening
+    // pressure: the bladder cannot void, and waiting max_void_s would only add steps.
+    if (protocol_.detrusor_kpa <= 0.0 && protocol_.straining_kpa <= 0.0 &&
+        units::cmh2o_from_pa(run_.pves()) < protocol_.p_open_cmh2o) {
+      result_.notes.push_back(
+          "no voiding: Pves stays below the opening pressure without detrusor_kpa or "
+          "straining_kpa");
+      vesica::log()->warn("{}", result_.notes.back());
+      return;
+    }
     voiding_ = true;
     next_frame_ = run_.time();
     run_.begin_voiding();
@@ -172,14 +182,19 @@ class CystometryDriver {
     double dt = 0.1;
     bool flowing = false;
     const double stop = units::m3s_from_mls(protocol_.stop_flow_ml_s);
+    const double V_floor = units::m3_from_ml(1.0);
     while (run_.time() - t0 < protocol_.max_void_s) {
       const double V_before = run_.volume();
+      // The membrane has no contact: never let a step drain more than half of what is
+      // left above 1 ml, so the wall cannot collapse through itself.
+      if (run_.outflow() > 0.0)
+        dt = std::min(dt, 0.5 * (V_before - V_floor) / run_.outflow());
       run_.step(dt, 0.0, true);
       record();
       const double Q = run_.outflow();
       if (Q >= stop) flowing = true;
       if (flowing && Q < stop) break;
-      if (run_.volume() < units::m3_from_ml(1.0)) break;
+      if (run_.volume() < 2.0 * V_floor) break;
       // Aim at about 2 ml per step while urine flows, larger steps while it does not.
       const double dV = std::abs(V_before - run_.volume());
       const double aim = units::m3_from_ml(2.0);
@@ -192,6 +207,7 @@ class CystometryDriver {
     nlohmann::json& s = result_.summary;
     const auto& h = result_.history;
     s["completed"] = result_.completed;
+    if (!result_.notes.empty()) s["notes"] = result_.notes;
     if (!result_.completed) s["failure"] = result_.failure;
     s["triangles"] = run_.wall().triangle_count();
     s["nodes"] = run_.wall().node_count();

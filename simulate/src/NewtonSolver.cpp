@@ -84,10 +84,10 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
   bool reusable = lu_->reusable;
   lu_->reusable = false;  // until this solve converges
   // Regularized iterations are pseudo-time steps towards equilibrium: they extend the
-  // budget, up to four times the plain Newton limit.
+  // budget, up to twice the plain Newton limit (past that a shorter step is cheaper).
   auto limit = [&] {
     return std::min(options_.max_iterations + report.regularized_iterations,
-                    4 * options_.max_iterations);
+                    2 * options_.max_iterations);
   };
   for (int it = 0; it <= limit(); ++it) {
     try {

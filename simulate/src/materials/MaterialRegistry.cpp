@@ -1,5 +1,6 @@
 // The material registry: one line per material name. Parameters are SI (Pa, s):
-//   neo-hookean: mu, K, beta_vol (9)
+//   neo-hookean: mu, K (10 kPa) or K_per_mu (K = K_per_mu * mu, follows a fitted mu),
+//                beta_vol (9)
 //   maxwell:     neo-hookean + beta1..beta5, tau1..tau5 (or beta, tau for one branch)
 //   fibers:      maxwell + k1 (Pa), k2 (-); fibers are viscoelastic with the same branches
 #include <algorithm>
@@ -12,8 +13,11 @@
 namespace vesica::simulate {
 namespace {
 
-OgdenVolumetric volumetric_from(ParamReader& p) {
-  return OgdenVolumetric(p.positive("K", 10e3), p.positive("beta_vol", 9.0));
+OgdenVolumetric volumetric_from(ParamReader& p, double mu) {
+  const bool ratio = p.has("K_per_mu");
+  if (ratio && p.has("K")) usage_error("material parameters K and K_per_mu exclude each other");
+  const double K = ratio ? p.positive("K_per_mu", 1e3) * mu : p.positive("K", 10e3);
+  return OgdenVolumetric(K, p.positive("beta_vol", 9.0));
 }
 
 std::vector<MaxwellBranch> branches_from(ParamReader& p) {
@@ -32,26 +36,29 @@ std::vector<MaxwellBranch> branches_from(ParamReader& p) {
 
 std::unique_ptr<Material> make_neo_hookean(const MaterialSpec& spec) {
   ParamReader p(spec);
+  const double mu = p.positive("mu", 5e3);
   auto m = std::make_unique<DecoupledMaxwell>(
-      volumetric_from(p), std::make_unique<NeoHookeanIsochoric>(p.positive("mu", 5e3)),
-      std::vector<MaxwellBranch>{});
+      volumetric_from(p, mu), std::make_unique<NeoHookeanIsochoric>(mu), std::vector<MaxwellBranch>{});
   p.check_known_params();
   return m;
 }
 
 std::unique_ptr<Material> make_maxwell(const MaterialSpec& spec) {
   ParamReader p(spec);
-  auto iso = std::make_unique<NeoHookeanIsochoric>(p.positive("mu", 5e3));
-  auto m = std::make_unique<DecoupledMaxwell>(volumetric_from(p), std::move(iso), branches_from(p));
+  const double mu = p.positive("mu", 5e3);
+  auto iso = std::make_unique<NeoHookeanIsochoric>(mu);
+  auto m =
+      std::make_unique<DecoupledMaxwell>(volumetric_from(p, mu), std::move(iso), branches_from(p));
   p.check_known_params();
   return m;
 }
 
 std::unique_ptr<Material> make_fibers(const MaterialSpec& spec) {
   ParamReader p(spec);
-  auto iso = std::make_unique<FiberFamilies>(p.positive("mu", 5e3), p.get("k1", 10.0),
-                                             p.positive("k2", 1.0));
-  auto m = std::make_unique<DecoupledMaxwell>(volumetric_from(p), std::move(iso), branches_from(p));
+  const double mu = p.positive("mu", 5e3);
+  auto iso = std::make_unique<FiberFamilies>(mu, p.get("k1", 10.0), p.positive("k2", 1.0));
+  auto m =
+      std::make_unique<DecoupledMaxwell>(volumetric_from(p, mu), std::move(iso), branches_from(p));
   p.check_known_params();
   return m;
 }

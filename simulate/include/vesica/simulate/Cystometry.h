@@ -112,6 +112,7 @@ struct CystometryResult {
   nlohmann::json summary;  // the keys of summary.json
   bool completed = false;  // false: a step failed after cut-backs; see failure
   std::string failure;     // "step failed at t = .. s, V = .. ml: <reason>"
+  std::vector<std::string> notes;  // what the user should know (e.g. no voiding drive)
 };
 
 // Throws vesica::Error (usage) for an invalid protocol or one above the geometry's
