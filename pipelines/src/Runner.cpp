@@ -150,6 +150,11 @@ class Execution {
       return;
     }
     o.action = "failed";
+    // A stage may write its manifest before failing (vesica-simulate keeps the results up
+    // to a stalled step). Removing it keeps the rule that a failed stage is missing next
+    // time, as Snakemake deletes a failed job's outputs.
+    std::error_code ec;
+    fs::remove(plan_.in_workdir(plan_.stages[i].manifest), ec);
     if (result_.ok) {
       result_.ok = false;
       result_.failed_stage = o.id;

@@ -20,11 +20,15 @@ std::string label_of(const StudyRow& row) {
   return row.variant.empty() ? "(shared)" : row.variant;
 }
 
-// Pdet against volume while filling, one line per variant, with the design limits.
-std::string filling_plot(const StudyReport& report) {
-  SvgPlot plot("Filling: Pdet against volume", "volume (ml)", "Pdet (cmH2O)");
-  plot.id("plot-filling");
-  double v_max = kDesignCapacityMl * 1.1, p_max = kDesignPdetHighCmh2o * 1.1;
+// Pdet against volume while filling, one line per variant. With `limits` the axes take in
+// the design limits (capacity and pressure band); without, the pressure axis fits the data,
+// because a compliant pouch stays far below the band and its curves would look flat.
+std::string filling_plot(const StudyReport& report, bool limits) {
+  SvgPlot plot(limits ? "Filling: Pdet against volume, design limits"
+                      : "Filling: Pdet against volume, pressure axis fitted to the data",
+               "volume (ml)", "Pdet (cmH2O)");
+  plot.id(limits ? "plot-filling" : "plot-filling-detail");
+  double v_max = kDesignCapacityMl * 1.1, p_max = limits ? kDesignPdetHighCmh2o * 1.1 : 0.0;
   for (const auto& row : report.rows()) {
     if (!row.curve || row.curve->size() == 0) continue;
     const CystometryCurve& c = *row.curve;
@@ -35,9 +39,9 @@ std::string filling_plot(const StudyReport& report) {
     p_max = std::max(p_max, *std::max_element(p.begin(), p.end()) * 1.05);
     plot.add_line(label_of(row), v, p);
   }
-  plot.x_range(0.0, v_max).y_range(0.0, p_max);
-  plot.add_hband(kDesignPdetLowCmh2o, kDesignPdetHighCmh2o, "design max pressure 40-70 cmH2O",
-                 "#f4c7c3");
+  plot.x_range(0.0, v_max).y_range(0.0, p_max > 0.0 ? p_max : 1.0);
+  if (limits)
+    plot.add_hband(kDesignPdetLowCmh2o, kDesignPdetHighCmh2o, "design Pmax 40-70 cmH2O", "#f4c7c3");
   plot.add_vline(kDesignCapacityMl, "design capacity 500 ml");
   return plot.render();
 }
@@ -111,6 +115,7 @@ table { border-collapse: collapse; margin: 0.5em 0 1.5em; font-size: 0.9em; }
 th, td { border: 1px solid #ccc; padding: 3px 6px; text-align: right; }
 th:first-child, td:first-child, td.failure { text-align: left; }
 td.failed, td.failure, .missing { color: #8b0000; }
+div.wide { overflow-x: auto; }
 </style>
 )";
 
@@ -128,7 +133,8 @@ std::string study_html(const StudyReport& report, const std::string& study_name)
        "the volume where filling Pdet first reaches 40 cmH2O; compliance is &Delta;V/&Delta;Pdet "
        "from the start to the end of filling (physics.md &sect;7). Shaded: the artificial-"
        "bladder design limits (capacity about 500 ml, maximum pressure 40-70 cmH2O).</p>\n";
-  o << table(report) << filling_plot(report) << flow_plot(report);
+  o << "<div class=\"wide\">" << table(report) << "</div>\n"
+    << filling_plot(report, true) << filling_plot(report, false) << flow_plot(report);
   o << "<pre id=\"js-errors\"></pre><p id=\"render-check\"></p>\n</body></html>\n";
   return o.str();
 }

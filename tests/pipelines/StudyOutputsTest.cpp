@@ -167,7 +167,7 @@ TEST_F(StudyOutputs, PageOpensInHeadlessChromiumWithoutErrors) {
   EXPECT_EQ(log.find("Uncaught"), std::string::npos) << log;
   EXPECT_FALSE(std::regex_search(log, std::regex("CONSOLE.*[Ee]rror"))) << log;
   EXPECT_NE(dom.out.find("<pre id=\"js-errors\"></pre>"), std::string::npos);
-  EXPECT_NE(dom.out.find("plots=2 drawn=2"), std::string::npos) << dom.out.substr(0, 3000);
+  EXPECT_NE(dom.out.find("plots=3 drawn=3"), std::string::npos) << dom.out.substr(0, 3000);
   for (const char* variant : {"soft", "stiff", "large", "oblong"})
     EXPECT_NE(dom.out.find(std::string("<td>") + variant + "</td>"), std::string::npos) << variant;
 }

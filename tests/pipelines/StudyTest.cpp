@@ -185,3 +185,17 @@ TEST(Study, KeepGoingRunsTheVariantsAFailureDoesNotTouch) {
   EXPECT_EQ(code, 1);
   EXPECT_EQ(slurp(dir / "out/variants/good/c.txt"), "A\nB\nC2\n");
 }
+
+// vesica-simulate writes its results and manifest for a run that stalls, then exits 1.
+TEST(Study, AStageThatFailsAfterWritingIsMissingNextTime) {
+  const fs::path dir = scratch_dir("study-fail-after-writing");
+  write_text(
+      dir / "s.yaml",
+      "stages:\n"
+      "  a: {tool: teststage, output: a.txt, params: {label: A, fail_after_writing: true}}\n");
+  int code = 0;
+  EXPECT_EQ(run_json(dir / "s.yaml", dir, "", &code), Ids{});
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(slurp(dir / "a.txt"), "A\n");  // its results stay
+  EXPECT_EQ(status_of(dir / "s.yaml", dir).at("a").first, "missing");
+}
