@@ -60,8 +60,9 @@ std::vector<std::size_t> chain_of(const Plan& plan, std::size_t index) {
 std::string failure_in_run(const RunResult& run, const std::vector<std::size_t>& chain) {
   for (std::size_t i : chain) {
     const StageOutcome& o = run.stages[i];
-    if (o.action == "failed")
-      return o.id + " failed (exit " + std::to_string(o.exit_code) + "): " + o.last_line;
+    if (o.action == "failed")  // a stage killed by a signal may print nothing
+      return o.id + " failed (exit " + std::to_string(o.exit_code) + ")" +
+             (o.last_line.empty() ? "" : ": " + o.last_line);
   }
   return "";
 }
