@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "vesica/pipelines/Runner.h"
 #include "vesica/pipelines/SnakemakeExport.h"
 #include "vesica/pipelines/Staleness.h"
+#include "vesica/pipelines/StudyReport.h"
 #include "vesica/pipelines/Suggest.h"
 
 namespace fs = std::filesystem;
@@ -31,6 +33,7 @@ Usage:
       --force         run every selected stage, stale or not
       --workdir DIR   outputs go here instead of the file's workdir
       -j N            run up to N independent stages at once
+      -k, --keep-going  after a failure, still run the stages that do not depend on it
       --json          no progress; print the result as JSON
   vesica status FILE [--workdir DIR] [--json]
                                        each stage: fresh, stale or missing, and why
@@ -115,6 +118,23 @@ int status(int argc, char** argv) {
   return 0;
 }
 
+// A study with simulations gets its table and page after every run that changed something (or lost
+// them), so a run where everything is fresh writes nothing. Returns whether they were written.
+bool update_study_outputs(const Plan& plan, const RunResult& r) {
+  const auto has = [&](auto predicate) {
+    return std::any_of(plan.stages.begin(), plan.stages.end(), predicate);
+  };
+  if (!has([](const PlannedStage& s) { return !s.variant.empty(); }) ||
+      !has([](const PlannedStage& s) { return s.tool == "simulate"; }))
+    return false;
+  const bool missing =
+      !fs::exists(plan.workdir / "study.csv") || !fs::exists(plan.workdir / "study.html");
+  if (r.ran().empty() && r.ok && !missing) return false;
+  const StudyReport report = StudyReport::collect(plan, &r);
+  write_study_outputs(plan, report);
+  return true;
+}
+
 int run(int argc, char** argv) {
   CLI::App app("Run the stale stages", "run");
   std::string file, workdir;
@@ -126,6 +146,8 @@ int run(int argc, char** argv) {
   app.add_flag("--force", options.force, "Run every selected stage");
   app.add_option("--workdir", workdir, "Outputs folder");
   app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
+  app.add_flag("-k,--keep-going", options.keep_going,
+               "After a failure, run the stages that do not depend on it");
   app.add_flag("--json", json, "Print the result as JSON, no progress");
   if (int rc = parse(app, argc, argv); rc >= 0) return rc;
   Loaded l = load(file, workdir);
@@ -134,6 +156,9 @@ int run(int argc, char** argv) {
   if (!json)
     options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
   const RunResult r = run_plan(l.plan, options);
+  if (update_study_outputs(l.plan, r) && !json)
+    std::fprintf(stderr, "vesica: study table and page: %s, %s\n",
+                 (l.plan.workdir / "study.csv").c_str(), (l.plan.workdir / "study.html").c_str());
   if (json) std::cout << r.to_json().dump(2) << "\n";
   if (!r.ok) {
     const auto& failed = r.stages[static_cast<std::size_t>(l.plan.index_of(r.failed_stage))];

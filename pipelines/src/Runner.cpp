@@ -60,7 +60,7 @@ class Execution {
   RunResult run() {
     fs::create_directories(plan_.workdir);
     while (true) {
-      if (result_.ok) launch_ready();
+      if (result_.ok || options_.keep_going) launch_ready();
       if (running_.empty()) break;
       wait_for_output();
     }
@@ -88,7 +88,7 @@ class Execution {
   void launch_ready() {
     for (std::size_t i = 0; i < plan_.stages.size(); ++i) {
       if (static_cast<int>(running_.size()) >= std::max(1, options_.jobs)) return;
-      if (!result_.ok) return;  // a stage could not even start
+      if (!result_.ok && !options_.keep_going) return;  // a stage could not even start
       if (!ready(i)) continue;
       const PlannedStage& s = plan_.stages[i];
       ++launched_;
@@ -140,6 +140,7 @@ class Execution {
     o.seconds = seconds;
     o.exit_code = code;
     for (const auto& line : extra) forward(i, line);
+    o.last_line = last_line_[o.id];
     if (code == 0) {
       o.action = "ran";
       say("vesica: " + o.id + " done in " + format_seconds(seconds));
@@ -149,6 +150,11 @@ class Execution {
       return;
     }
     o.action = "failed";
+    // A stage may write its manifest before failing (vesica-simulate keeps the results up
+    // to a stalled step). Removing it keeps the rule that a failed stage is missing next
+    // time, as Snakemake deletes a failed job's outputs.
+    std::error_code ec;
+    fs::remove(plan_.in_workdir(plan_.stages[i].manifest), ec);
     if (result_.ok) {
       result_.ok = false;
       result_.failed_stage = o.id;

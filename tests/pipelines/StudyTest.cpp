@@ -98,20 +98,104 @@ TEST(Study, UnknownStageInStudyIsSuggested) {
       << r.err;
 }
 
-TEST(Study, ReportHookFindsEachVariantsSimulation) {
+// study.csv from hand-written simulation outputs, every number worked out by hand:
+// mu_kpa-5 never ran, mu_kpa-8 filled 100 -> 500 ml and voided, mu_kpa-12 failed at 200 ml.
+TEST(Study, TableHasOneRowPerVariantWithFailures) {
   const fs::path dir = scratch_dir("study-report");
   const std::string yaml =
       "stages:\n"
-      "  sim: {tool: simulate, output: sim, params: {mu_kpa: 5}}\n"
+      "  sim: {tool: simulate, output: sim, params: {mu_kpa: 5, no_series: true}}\n"
       "study:\n"
-      "  matrix: {sim.mu_kpa: [5, 8]}\n";
+      "  matrix: {sim.mu_kpa: [5, 8, 12]}\n";
   vesica::pipelines::Diagnostics d;
   const auto plan = vesica::pipelines::build_plan(
       vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
   ASSERT_TRUE(d.empty()) << d.format("r.yaml");
-  write_text(dir / "variants/mu_kpa-8/sim/summary.json", "{\"compliance_ml_per_cmh2o\": 40.5}");
+  const std::string header = "time_s,volume_ml,pdet_cmh2o,flow_ml_s\n";
+  write_text(dir / "variants/mu_kpa-8/sim/summary.json",
+             R"({"completed": true, "qmax_ml_s": 20, "pvr_ml": 439, "max_wall_stress_kpa": 31})");
+  write_text(dir / "variants/mu_kpa-8/sim/history.csv",
+             header +
+                 "0,100,0,0\n120,200,5,0\n240,300,10,0\n360,400,30,0\n420,450,50,0\n"
+                 "480,500,60,0\n481,480,65,20\n483,439,5,0\n");
+  write_text(dir / "variants/mu_kpa-12/sim/summary.json",
+             R"({"completed": false, "failure": "step failed at t = 120 s, V = 200 ml: stalled"})");
+  write_text(dir / "variants/mu_kpa-12/sim/history.csv",
+             header + "0,100,0,0\n60,150,2,0\n120,200,5,0\n");
   const auto report = vesica::pipelines::StudyReport::collect(plan);
+  ASSERT_EQ(report.rows().size(), 3u);
+  EXPECT_EQ(report.to_csv(),
+            "variant,status,sim.mu_kpa,pdet_at_300ml_cmh2o,pdet_at_500ml_cmh2o,max_pdet_cmh2o,"
+            "compliance_ml_per_cmh2o,capacity_at_40cmh2o_ml,qmax_ml_s,pvr_ml,"
+            "max_wall_stress_kpa,failure\n"
+            "mu_kpa-5,not run,5,,,,,,,,,no summary.json yet\n"
+            // 40 cmH2O between 400 ml @ 30 and 450 ml @ 50; compliance 400 ml / 60 cmH2O
+            "mu_kpa-8,ok,8,10,60,65,6.66667,425,20,439,31,\n"
+            // never reached 300 ml; capacity above the 200 ml reached; 100 ml / 5 cmH2O
+            "mu_kpa-12,failed,12,,,5,20,>200,,,,"
+            "\"step failed at t = 120 s, V = 200 ml: stalled\"\n");
+}
+
+TEST(Study, TableNamesTheFailureOfTheRunThatJustHappened) {
+  const fs::path dir = scratch_dir("study-report-run");
+  const std::string yaml =
+      "stages:\n"
+      "  mesh: {tool: mesh, input: in.vtp, output: m.msh, params: {thickness_mm: 3}}\n"
+      "  sim: {tool: simulate, input: m.msh, output: sim, params: {mu_kpa: 5}}\n"
+      "study:\n"
+      "  variants: {thin: {mesh.thickness_mm: 2}, soft: {sim.mu_kpa: 1}}\n";
+  write_text(dir / "in.vtp", "");
+  vesica::pipelines::Diagnostics d;
+  const auto plan = vesica::pipelines::build_plan(
+      vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
+  ASSERT_TRUE(d.empty()) << d.format("r.yaml");
+  vesica::pipelines::RunResult run;
+  for (const auto& s : plan.stages) {
+    vesica::pipelines::StageOutcome o;
+    o.id = s.id;
+    o.action = s.id == "mesh@thin" ? "failed" : s.id == "sim@thin" ? "blocked" : "ran";
+    if (o.action == "failed") o.exit_code = 1, o.last_line = "vesica-mesh: error: in.vtp: empty";
+    run.stages.push_back(o);
+  }
+  const auto report = vesica::pipelines::StudyReport::collect(plan, &run);
   ASSERT_EQ(report.rows().size(), 2u);
-  EXPECT_TRUE(report.rows()[0].summary.is_null());
-  EXPECT_EQ(report.to_csv(), "variant,compliance_ml_per_cmh2o\nmu_kpa-5,\nmu_kpa-8,40.5\n");
+  EXPECT_EQ(report.rows()[0].variant, "thin");
+  EXPECT_EQ(report.rows()[0].status, "failed");
+  EXPECT_EQ(report.rows()[0].failure,
+            "mesh@thin failed (exit 1): vesica-mesh: error: in.vtp: empty");
+  // The varied parameters of both stages are columns; the shared ones are not.
+  EXPECT_EQ(report.varied_parameters(), (Ids{"mesh.thickness_mm", "sim.mu_kpa"}));
+}
+
+TEST(Study, KeepGoingRunsTheVariantsAFailureDoesNotTouch) {
+  const fs::path dir = scratch_dir("study-keep-going");
+  write_text(dir / "study.yaml",
+             "workdir: out\n"
+             "stages:\n"
+             "  a: {tool: teststage, output: a.txt, params: {label: A}}\n"
+             "  b: {tool: teststage, input: a.txt, output: b.txt, params: {label: B}}\n"
+             "  c: {tool: teststage, input: b.txt, output: c.txt, params: {label: C}}\n"
+             "study:\n"
+             "  variants: {bad: {b.fail: true}, good: {c.label: C2}}\n");
+  int code = 0;
+  // Without --keep-going the run stops at the first failure (b@bad runs first).
+  EXPECT_EQ(run_json(dir / "study.yaml", dir, "", &code), Ids{"a"});
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(run_json(dir / "study.yaml", dir, "--keep-going", &code), (Ids{"b", "c@good"}));
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(slurp(dir / "out/variants/good/c.txt"), "A\nB\nC2\n");
+}
+
+// vesica-simulate writes its results and manifest for a run that stalls, then exits 1.
+TEST(Study, AStageThatFailsAfterWritingIsMissingNextTime) {
+  const fs::path dir = scratch_dir("study-fail-after-writing");
+  write_text(
+      dir / "s.yaml",
+      "stages:\n"
+      "  a: {tool: teststage, output: a.txt, params: {label: A, fail_after_writing: true}}\n");
+  int code = 0;
+  EXPECT_EQ(run_json(dir / "s.yaml", dir, "", &code), Ids{});
+  EXPECT_EQ(code, 1);
+  EXPECT_EQ(slurp(dir / "a.txt"), "A\n");  // its results stay
+  EXPECT_EQ(status_of(dir / "s.yaml", dir).at("a").first, "missing");
 }

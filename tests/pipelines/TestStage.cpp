@@ -43,13 +43,15 @@ int main(int argc, char** argv) {
   vesica::CommonOptions common;
   std::vector<std::string> inputs;
   std::string output, label = "stage", aux;
-  bool fail = false, dir = false;
+  bool fail = false, fail_after_writing = false, dir = false;
   int sleep_ms = 0;
   app.add_option("inputs", inputs, "Input files or folders");
   app.add_option("-o,--output", output, "Output file (or folder with --dir)")->required();
   app.add_option("--label", label, "Line appended to the output");
   app.add_option("--aux", aux, "One more input, appended after the positional ones");
   app.add_flag("--fail", fail, "Fail after reading the inputs, writing nothing");
+  app.add_flag("--fail-after-writing", fail_after_writing,
+               "Write everything, manifest included, then fail (like a simulation that stalls)");
   app.add_flag("--dir", dir, "Write a folder with data.txt instead of a file");
   app.add_option("--sleep-ms", sleep_ms, "Wait this long before writing (parallel tests)");
   vesica::add_common_options(app, common);
@@ -79,6 +81,7 @@ int main(int argc, char** argv) {
     record.add_output(output);
     record.summary()["bytes"] = text.size();
     record.write(common.report, vesica::default_manifest_path(common, output));
+    if (fail_after_writing) vesica::fail(output, "told to fail after writing");
     return 0;
   });
 }

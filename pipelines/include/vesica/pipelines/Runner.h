@@ -18,6 +18,9 @@ struct RunOptions {
   std::vector<std::string> from;  // rerun these and everything downstream, stale or not
   bool force = false;             // run every selected stage, stale or not
   int jobs = 1;
+  // After a failure, keep starting the stages that do not depend on it (a study's other
+  // variants); the run still ends failed.
+  bool keep_going = false;
   bool capture = false;  // keep stage output in the result instead of passing it through
   // Where progress and passed-through stage output go (stderr in the CLI); may be empty.
   std::function<void(const std::string&)> progress;
@@ -30,6 +33,7 @@ struct StageOutcome {
   double seconds = 0;
   int exit_code = 0;
   std::vector<std::string> log;  // captured output lines (capture mode, or the failure)
+  std::string last_line;         // last non-empty line the stage printed
 };
 
 struct RunResult {
