@@ -1,0 +1,40 @@
+#pragma once
+// The urine domain as linear tetrahedra and its boundary conditions. Positions in m.
+// Unknowns are node-major: dof 4 i + k is velocity component k (m/s) of node i for
+// k < 3, and its pressure (Pa) for k = 3.
+#include <array>
+#include <vector>
+
+#include <Eigen/Dense>
+
+namespace vesica::simulate::fluid {
+
+struct FluidMesh {
+  std::vector<Eigen::Vector3d> nodes;    // m
+  std::vector<std::array<int, 4>> tets;  // either orientation
+};
+
+// Velocity prescribed on some components of one node (no-slip: all three, zero).
+struct VelocityCondition {
+  int node = 0;
+  std::array<bool, 3> component{true, true, true};
+  Eigen::Vector3d value = Eigen::Vector3d::Zero();  // m/s
+};
+
+// A boundary triangle carrying the traction -p̄ n (n outward from the fluid).
+struct PressureFace {
+  std::array<int, 3> nodes{};  // any orientation; the outward side is found from the mesh
+  double pressure = 0.0;       // p̄, Pa
+};
+
+struct FluidBoundary {
+  std::vector<VelocityCondition> velocity;
+  std::vector<PressureFace> pressure_faces;
+  // Pressure of one node fixed (needed when no pressure face fixes the constant).
+  int pinned_pressure_node = -1;
+  double pinned_pressure = 0.0;  // Pa
+};
+
+constexpr int kDofsPerNode = 4;
+
+}  // namespace vesica::simulate::fluid

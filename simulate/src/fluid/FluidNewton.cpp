@@ -1,0 +1,79 @@
+#include "vesica/simulate/fluid/FluidNewton.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/UmfPackSupport>
+
+#include "vesica/core/Log.h"
+
+namespace vesica::simulate::fluid {
+
+struct FluidNewton::Factorization {
+  Eigen::UmfPackLU<Eigen::SparseMatrix<double>> lu;
+  bool analyzed = false;
+};
+
+FluidNewton::FluidNewton(const FluidProblem& problem, FluidNewtonOptions options)
+    : problem_(problem), options_(options), lu_(std::make_unique<Factorization>()) {}
+
+FluidNewton::~FluidNewton() = default;
+
+namespace {
+
+// Largest magnitude of the velocity (fields 0-2) or pressure (field 3) entries.
+double field_max(const Eigen::VectorXd& v, bool pressure) {
+  double m = 0.0;
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    if ((i % kDofsPerNode == 3) == pressure) m = std::max(m, std::abs(v[i]));
+  return m;
+}
+
+}  // namespace
+
+FluidNewtonReport FluidNewton::solve(const Eigen::VectorXd& state_old, double inverse_dt,
+                                     Eigen::VectorXd& state) {
+  FluidNewtonReport report;
+  Eigen::VectorXd residual;
+  Eigen::SparseMatrix<double> jacobian;
+  for (int it = 1; it <= options_.max_iterations; ++it) {
+    try {
+      problem_.assemble(state, state_old, inverse_dt, residual, &jacobian);
+    } catch (const std::runtime_error& e) {
+      report.failure = e.what();
+      return report;
+    }
+    if (!lu_->analyzed) {
+      lu_->lu.analyzePattern(jacobian);
+      lu_->analyzed = true;
+    }
+    lu_->lu.factorize(jacobian);
+    if (lu_->lu.info() != Eigen::Success) {
+      report.failure = "singular fluid Jacobian";
+      return report;
+    }
+    const Eigen::VectorXd delta = -lu_->lu.solve(residual);
+    if (!delta.allFinite()) {
+      report.failure = "fluid Newton increment is not finite";
+      return report;
+    }
+    state += delta;
+    report.iterations = it;
+    const double du = field_max(delta, false), dp = field_max(delta, true);
+    const double u_scale = field_max(state, false), p_scale = field_max(state, true);
+    const double rel_u = du / std::max(u_scale, options_.velocity_floor);
+    report.increments.push_back(rel_u);
+    vesica::log()->debug("fluid newton {}: |du| = {:.3e} m/s, |dp| = {:.3e} Pa", it, du, dp);
+    const bool u_ok = du <= options_.increment_tolerance * u_scale || du <= options_.velocity_floor;
+    const bool p_ok = dp <= options_.increment_tolerance * p_scale || dp <= options_.pressure_floor;
+    if (u_ok && p_ok) {
+      report.converged = true;
+      return report;
+    }
+  }
+  report.failure =
+      "fluid Newton did not converge in " + std::to_string(options_.max_iterations) + " iterations";
+  return report;
+}
+
+}  // namespace vesica::simulate::fluid

@@ -1,0 +1,96 @@
+#include "vesica/simulate/fluid/FluidProblem.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "vesica/simulate/fluid/StabilizedTet.h"
+
+namespace vesica::simulate::fluid {
+
+FluidProblem::FluidProblem(const FluidMesh& mesh, const FluidBoundary& boundary,
+                           const FluidProperties& fluid)
+    : mesh_(mesh), boundary_(boundary), fluid_(fluid), faces_(mesh) {
+  const int n = static_cast<int>(mesh.nodes.size());
+  constrained_.assign(dof_count(), false);
+  constrained_value_ = Eigen::VectorXd::Zero(dof_count());
+  for (const auto& c : boundary.velocity) {
+    if (c.node < 0 || c.node >= n)
+      throw std::invalid_argument("velocity condition on node " + std::to_string(c.node) +
+                                  " outside the mesh");
+    for (int k = 0; k < 3; ++k) {
+      if (!c.component[k]) continue;
+      constrained_[kDofsPerNode * c.node + k] = true;
+      constrained_value_[kDofsPerNode * c.node + k] = c.value[k];
+    }
+  }
+  if (boundary.pinned_pressure_node >= n)
+    throw std::invalid_argument("pinned pressure node outside the mesh");
+  if (boundary.pinned_pressure_node >= 0) {
+    constrained_[kDofsPerNode * boundary.pinned_pressure_node + 3] = true;
+    constrained_value_[kDofsPerNode * boundary.pinned_pressure_node + 3] = boundary.pinned_pressure;
+  }
+  for (const auto& f : boundary.pressure_faces)
+    pressure_face_normals_.push_back(faces_.area_normal(f.nodes));
+}
+
+Eigen::VectorXd FluidProblem::initial_state() const {
+  Eigen::VectorXd state = Eigen::VectorXd::Zero(dof_count());
+  for (int i = 0; i < dof_count(); ++i)
+    if (constrained_[i]) state[i] = constrained_value_[i];
+  return state;
+}
+
+void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd& state_old,
+                            double inverse_dt, Eigen::VectorXd& residual,
+                            Eigen::SparseMatrix<double>* jacobian) const {
+  residual = Eigen::VectorXd::Zero(dof_count());
+  std::vector<Eigen::Triplet<double>> triplets;
+  if (jacobian) triplets.reserve(mesh_.tets.size() * 256);
+  // Rows of constrained dofs become (U_i − Ū_i) scaled like a typical diagonal entry, so
+  // the matrix stays well conditioned.
+  double diagonal_scale = 0.0;
+
+  TetState s;
+  TetVector r_e;
+  TetMatrix k_e;
+  for (const auto& tet : mesh_.tets) {
+    for (int a = 0; a < 4; ++a) {
+      const int dof = kDofsPerNode * tet[a];
+      s.x[a] = mesh_.nodes[tet[a]];
+      s.u[a] = state.segment<3>(dof);
+      s.p[a] = state[dof + 3];
+      s.u_old[a] = state_old.segment<3>(dof);
+    }
+    stabilized_tet(s, fluid_, inverse_dt, r_e, jacobian ? &k_e : nullptr);
+    for (int a = 0; a < 4; ++a) {
+      for (int i = 0; i < kDofsPerNode; ++i) {
+        const int row = kDofsPerNode * tet[a] + i;
+        residual[row] += r_e[kDofsPerNode * a + i];
+        if (!jacobian || constrained_[row]) continue;
+        diagonal_scale = std::max(diagonal_scale, std::abs(k_e(4 * a + i, 4 * a + i)));
+        for (int b = 0; b < 4; ++b)
+          for (int j = 0; j < kDofsPerNode; ++j)
+            triplets.emplace_back(row, kDofsPerNode * tet[b] + j,
+                                  k_e(kDofsPerNode * a + i, kDofsPerNode * b + j));
+      }
+    }
+  }
+  // Traction −p̄ n: the weak form's −∫ w·t̄ = +p̄ ∫ N_a n, i.e. p̄ A n / 3 per corner.
+  for (size_t f = 0; f < boundary_.pressure_faces.size(); ++f) {
+    const auto& face = boundary_.pressure_faces[f];
+    for (int v : face.nodes)
+      residual.segment<3>(kDofsPerNode * v) += face.pressure * pressure_face_normals_[f] / 3.0;
+  }
+  if (diagonal_scale == 0.0) diagonal_scale = 1.0;
+  for (int i = 0; i < dof_count(); ++i) {
+    if (!constrained_[i]) continue;
+    residual[i] = diagonal_scale * (state[i] - constrained_value_[i]);
+    if (jacobian) triplets.emplace_back(i, i, diagonal_scale);
+  }
+  if (jacobian) {
+    jacobian->resize(dof_count(), dof_count());
+    jacobian->setFromTriplets(triplets.begin(), triplets.end());
+  }
+}
+
+}  // namespace vesica::simulate::fluid

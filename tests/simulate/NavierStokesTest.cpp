@@ -1,0 +1,226 @@
+// Level-2 urine flow on rigid tetrahedral meshes (docs/navier-stokes.md), against the
+// analytic answers of physics.md §6: hydrostatics p = ρ g depth with zero velocity, and
+// Poiseuille flow Q = π R⁴ Δp / (8 μ L). Meshes come from gmsh's OCC kernel. SI units.
+#include <gmsh.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <map>
+
+#include "vesica/simulate/fluid/BoundaryFaces.h"
+#include "vesica/simulate/fluid/FluidNewton.h"
+#include "vesica/simulate/fluid/FluidProblem.h"
+
+namespace vesica::simulate::fluid {
+namespace {
+
+// gmsh is a process-wide singleton: one session per mesh, quiet, no user config files.
+struct GmshScope {
+  GmshScope() {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", 0);
+  }
+  ~GmshScope() { gmsh::finalize(); }
+};
+
+// The linear tetrahedra of the current gmsh model, coordinates in mm → m.
+FluidMesh tetrahedra_from_gmsh() {
+  std::vector<std::size_t> tags;
+  std::vector<double> coord, param;
+  gmsh::model::mesh::getNodes(tags, coord, param);
+  FluidMesh mesh;
+  std::map<std::size_t, int> index;
+  for (std::size_t i = 0; i < tags.size(); ++i) {
+    index[tags[i]] = static_cast<int>(i);
+    mesh.nodes.emplace_back(1e-3 * coord[3 * i], 1e-3 * coord[3 * i + 1], 1e-3 * coord[3 * i + 2]);
+  }
+  std::vector<std::size_t> element_tags, node_tags;
+  gmsh::model::mesh::getElementsByType(4, element_tags, node_tags);
+  for (std::size_t e = 0; e < element_tags.size(); ++e)
+    mesh.tets.push_back({index[node_tags[4 * e]], index[node_tags[4 * e + 1]],
+                         index[node_tags[4 * e + 2]], index[node_tags[4 * e + 3]]});
+  return mesh;
+}
+
+FluidMesh box_mesh(double lx_mm, double ly_mm, double lz_mm, double size_mm) {
+  GmshScope gmsh_scope;
+  gmsh::model::occ::addBox(0, 0, 0, lx_mm, ly_mm, lz_mm);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size_mm);
+  gmsh::model::mesh::generate(3);
+  return tetrahedra_from_gmsh();
+}
+
+FluidMesh sphere_mesh(double radius_mm, double size_mm) {
+  GmshScope gmsh_scope;
+  gmsh::model::occ::addSphere(0, 0, 0, radius_mm);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size_mm);
+  gmsh::model::mesh::generate(3);
+  return tetrahedra_from_gmsh();
+}
+
+// A disk of radius R in the plane z = 0 extruded along z in `layers` layers of tetrahedra:
+// the flow is uniform along the axis, so long elements there cost no accuracy.
+FluidMesh tube_mesh(double radius_mm, double length_mm, double size_mm, int layers) {
+  GmshScope gmsh_scope;
+  const int disk = gmsh::model::occ::addDisk(0, 0, 0, radius_mm, radius_mm);
+  gmsh::vectorpair extruded;
+  gmsh::model::occ::extrude({{2, disk}}, 0, 0, length_mm, extruded, {layers});
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", size_mm);
+  gmsh::model::mesh::generate(3);
+  return tetrahedra_from_gmsh();
+}
+
+// No-slip on every boundary node.
+FluidBoundary closed_container(const FluidMesh& mesh) {
+  FluidBoundary boundary;
+  const BoundaryFaces faces(mesh);
+  std::vector<bool> on_wall(mesh.nodes.size(), false);
+  for (const auto& f : faces.faces())
+    for (int v : f) on_wall[v] = true;
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i)
+    if (on_wall[i]) boundary.velocity.push_back({i, {true, true, true}, Eigen::Vector3d::Zero()});
+  return boundary;
+}
+
+struct HydrostaticError {
+  double max_speed = 0.0;       // m/s
+  double max_relative_p = 0.0;  // |p − ρ g depth| / (ρ g depth) over nodes below the top
+  double max_absolute_p = 0.0;  // Pa
+  int newton_iterations = 0;
+};
+
+// Fluid at rest in a closed rigid container, pressure 0 at its highest node; `steps`
+// backward-Euler steps of dt from rest (0 steps: one steady solve).
+HydrostaticError solve_at_rest(const FluidMesh& mesh, int steps, double dt) {
+  FluidBoundary boundary = closed_container(mesh);
+  int top = 0;
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i)
+    if (mesh.nodes[i].z() > mesh.nodes[top].z()) top = i;
+  boundary.pinned_pressure_node = top;
+  const FluidProperties urine;
+  const FluidProblem problem(mesh, boundary, urine);
+  FluidNewton newton(problem);
+  Eigen::VectorXd state = problem.initial_state();
+  HydrostaticError error;
+  for (int step = 0; step < std::max(steps, 1); ++step) {
+    const Eigen::VectorXd old = state;
+    const FluidNewtonReport report = newton.solve(old, steps > 0 ? 1.0 / dt : 0.0, state);
+    EXPECT_TRUE(report.converged) << report.failure;
+    error.newton_iterations += report.iterations;
+  }
+  const double rho_g = urine.density * urine.gravity.norm();
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i) {
+    error.max_speed = std::max(error.max_speed, state.segment<3>(kDofsPerNode * i).norm());
+    const double depth = mesh.nodes[top].z() - mesh.nodes[i].z();
+    const double exact = rho_g * depth;
+    const double diff = std::abs(state[kDofsPerNode * i + 3] - exact);
+    error.max_absolute_p = std::max(error.max_absolute_p, diff);
+    if (depth > 1e-9) error.max_relative_p = std::max(error.max_relative_p, diff / exact);
+  }
+  return error;
+}
+
+TEST(NavierStokes, HydrostaticBoxAtRest) {
+  // 40 × 30 × 60 mm box: depth 60 mm, ρ g depth ≈ 589 Pa at the bottom.
+  const FluidMesh mesh = box_mesh(40, 30, 60, 6);
+  const HydrostaticError e = solve_at_rest(mesh, 0, 0.0);
+  std::printf(
+      "[ hydrostatics ] box, %zu tets: max |v| = %.2e m/s, max |Δp|/p = %.2e, %d Newton "
+      "iterations\n",
+      mesh.tets.size(), e.max_speed, e.max_relative_p, e.newton_iterations);
+  EXPECT_LT(e.max_speed, 1e-6);
+  EXPECT_LT(e.max_relative_p, 5e-3);
+}
+
+TEST(NavierStokes, HydrostaticSphereStaysAtRestInTime) {
+  // A 50 ml sphere (R = 22.9 mm) started from rest with zero pressure: backward Euler must
+  // reach hydrostatic equilibrium without any flow.
+  const FluidMesh mesh = sphere_mesh(22.9, 4);
+  const HydrostaticError e = solve_at_rest(mesh, 3, 0.1);
+  std::printf(
+      "[ hydrostatics ] sphere, %zu tets, 3 steps of 0.1 s: max |v| = %.2e m/s, "
+      "max |Δp|/p = %.2e\n",
+      mesh.tets.size(), e.max_speed, e.max_relative_p);
+  EXPECT_LT(e.max_speed, 1e-6);
+  EXPECT_LT(e.max_relative_p, 5e-3);
+}
+
+struct PoiseuilleResult {
+  double q_outlet = 0.0;  // m³/s
+  double q_inlet = 0.0;   // m³/s, into the tube
+  double q_exact = 0.0;   // π R⁴ Δp / (8 μ L)
+  int newton_iterations = 0;
+  std::size_t tets = 0;
+  double seconds = 0.0;
+};
+
+// Steady flow through a rigid tube along z driven by the pressure drop Δp: no-slip on the
+// side, traction −p n on the two ends with the in-plane velocity there set to zero
+// (fully developed flow enters and leaves parallel to the axis).
+PoiseuilleResult solve_poiseuille(double delta_p_pa) {
+  const double radius = 5e-3, length = 50e-3;
+  const auto start = std::chrono::steady_clock::now();
+  const FluidMesh mesh = tube_mesh(1e3 * radius, 1e3 * length, 0.5, 10);
+  FluidBoundary boundary;
+  const BoundaryFaces faces(mesh);
+  std::vector<std::array<int, 3>> inlet, outlet;
+  std::vector<bool> on_side(mesh.nodes.size(), false), on_end(mesh.nodes.size(), false);
+  for (const auto& f : faces.faces()) {
+    const Eigen::Vector3d n = faces.area_normal(f).normalized();
+    if (std::abs(n.z()) < 0.5) {
+      for (int v : f) on_side[v] = true;
+      continue;
+    }
+    const bool at_inlet = n.z() < 0.0;
+    (at_inlet ? inlet : outlet).push_back(f);
+    boundary.pressure_faces.push_back({f, at_inlet ? delta_p_pa : 0.0});
+    for (int v : f) on_end[v] = true;
+  }
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i) {
+    if (on_side[i])
+      boundary.velocity.push_back({i, {true, true, true}, Eigen::Vector3d::Zero()});
+    else if (on_end[i])
+      boundary.velocity.push_back({i, {true, true, false}, Eigen::Vector3d::Zero()});
+  }
+  // A horizontal tube: gravity would only add a hydrostatic pressure across the section,
+  // which does not change Q, so it is left out.
+  FluidProperties urine;
+  urine.gravity.setZero();
+  const FluidProblem problem(mesh, boundary, urine);
+  FluidNewton newton(problem);
+  Eigen::VectorXd state = problem.initial_state();
+  const FluidNewtonReport report = newton.solve(state, 0.0, state);
+  EXPECT_TRUE(report.converged) << report.failure;
+
+  PoiseuilleResult r;
+  r.q_outlet = flow_rate(faces, outlet, state);
+  r.q_inlet = -flow_rate(faces, inlet, state);
+  r.q_exact = M_PI * std::pow(radius, 4) * delta_p_pa / (8.0 * urine.viscosity * length);
+  r.newton_iterations = report.iterations;
+  r.tets = mesh.tets.size();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+TEST(NavierStokes, PoiseuilleFlowRate) {
+  // R = 5 mm, L = 50 mm, μ = 1e-3 Pa·s. Mean velocities 2 mm/s and 20 mm/s (Reynolds
+  // numbers 20 and 200 on the diameter): Δp = 8 μ L U / R².
+  for (const double mean_velocity : {2e-3, 20e-3}) {
+    const double delta_p = 8.0 * 1e-3 * 50e-3 * mean_velocity / (5e-3 * 5e-3);
+    const PoiseuilleResult r = solve_poiseuille(delta_p);
+    std::printf(
+        "[ poiseuille ] U = %.0f mm/s, %zu tets: Q_out/Q_exact = %.4f, Q_in/Q_exact = "
+        "%.4f, %d Newton iterations, %.1f s\n",
+        1e3 * mean_velocity, r.tets, r.q_outlet / r.q_exact, r.q_inlet / r.q_exact,
+        r.newton_iterations, r.seconds);
+    EXPECT_NEAR(r.q_outlet / r.q_exact, 1.0, 0.02);
+    EXPECT_NEAR(r.q_inlet / r.q_exact, 1.0, 0.02);
+  }
+}
+
+}  // namespace
+}  // namespace vesica::simulate::fluid
