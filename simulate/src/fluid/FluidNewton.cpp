@@ -1,5 +1,6 @@
 #include "vesica/simulate/fluid/FluidNewton.h"
 
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -37,12 +38,15 @@ FluidNewtonReport FluidNewton::solve(const Eigen::VectorXd& state_old, double in
   Eigen::VectorXd residual;
   Eigen::SparseMatrix<double> jacobian;
   for (int it = 1; it <= options_.max_iterations; ++it) {
+    const auto t0 = std::chrono::steady_clock::now();
     try {
       problem_.assemble(state, state_old, inverse_dt, residual, &jacobian);
     } catch (const std::runtime_error& e) {
       report.failure = e.what();
       return report;
     }
+    const auto t1 = std::chrono::steady_clock::now();
+    report.assembly_seconds += std::chrono::duration<double>(t1 - t0).count();
     if (!lu_->analyzed) {
       lu_->lu.analyzePattern(jacobian);
       lu_->analyzed = true;
@@ -57,6 +61,8 @@ FluidNewtonReport FluidNewton::solve(const Eigen::VectorXd& state_old, double in
       report.failure = "fluid Newton increment is not finite";
       return report;
     }
+    report.solve_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     state += delta;
     report.iterations = it;
     const double du = field_max(delta, false), dp = field_max(delta, true);

@@ -49,13 +49,16 @@ void stabilized_tet(const TetState& s, const FluidProperties& fluid, double inve
   const double div_u = G.trace();
   const Eigen::Matrix3d two_mu_eps = mu * (G + G.transpose());
 
-  // τ from the element-mean convective velocity (frozen in the tangent).
+  // τ from the element-mean convective velocity c̄; τ_M = (A + B |c̄|²)^(-1/2), so
+  // ∂τ_M/∂u_b = −τ_M³ B c̄ / 4 (c̄ is the mean of the four nodes).
   Eigen::Vector3d c_mean = Eigen::Vector3d::Zero();
   for (int a = 0; a < 4; ++a) c_mean += 0.25 * (s.u[a] - s.w_mesh[a]);
+  const double B = std::pow(2.0 * rho / h, 2);
   const double tau_m = 1.0 / std::sqrt(std::pow(2.0 * rho * inverse_dt, 2) +
-                                       std::pow(2.0 * rho * c_mean.norm() / h, 2) +
-                                       std::pow(12.0 * mu / (h * h), 2));
+                                       B * c_mean.squaredNorm() + std::pow(12.0 * mu / (h * h), 2));
   const double tau_c = h * h / (6.0 * tau_m);
+  const Eigen::Vector3d dtau_m = -std::pow(tau_m, 3) * B * c_mean / 4.0;
+  const Eigen::Vector3d dtau_c = -tau_c / tau_m * dtau_m;
 
   residual.setZero();
   if (tangent) tangent->setZero();
@@ -89,17 +92,19 @@ void stabilized_tet(const TetState& s, const FluidProperties& fluid, double inve
       const Eigen::Vector3d dNa = dN.row(a).transpose();
       for (int b = 0; b < 4; ++b) {
         const Eigen::Vector3d dNb = dN.row(b).transpose();
-        // ∂(ρ(∂u/∂t + (c·∇)u))/∂u_b with the Galerkin convection linearised fully:
-        // (c·∇N_b) I + N_b G (the mesh velocity does not depend on u).
+        // ∂r_M/∂u_b = ρ(N_b/Δt + c·∇N_b) I + ρ N_b G: both places u enters (c·∇)u.
         const double scalar_b = rho * (inverse_dt * N[b] + c_dot_grad[b]);
         const Eigen::Matrix3d d_inertia = scalar_b * Eigen::Matrix3d::Identity() + rho * N[b] * G;
-        Eigen::Matrix3d k_uu =
+        const Eigen::Matrix3d k_uu =
             N[a] * d_inertia +
             mu * (dNa.dot(dNb) * Eigen::Matrix3d::Identity() + dNb * dNa.transpose()) +
-            tau_m * rho * c_dot_grad[a] * scalar_b * Eigen::Matrix3d::Identity() +
-            tau_c * dNa * dNb.transpose();
+            rho * c_dot_grad[a] * (tau_m * d_inertia + r_m * dtau_m.transpose()) +
+            tau_m * rho * N[b] * r_m * dNa.transpose() +
+            dNa * (tau_c * dNb + div_u * dtau_c).transpose();
         const Eigen::Vector3d k_up = -N[b] * dNa + tau_m * rho * c_dot_grad[a] * dNb;
-        const Eigen::RowVector3d k_pu = N[a] * dNb.transpose() + tau_m * scalar_b * dNa.transpose();
+        const Eigen::RowVector3d k_pu = N[a] * dNb.transpose() +
+                                        tau_m * dNa.transpose() * d_inertia +
+                                        dNa.dot(r_m) * dtau_m.transpose();
         const double k_pp = tau_m * dNa.dot(dNb);
         K.block<3, 3>(4 * a, 4 * b) += w * k_uu;
         K.block<3, 1>(4 * a, 4 * b + 3) += w * k_up;

@@ -23,6 +23,8 @@ struct FluidNewtonReport {
   int iterations = 0;
   std::vector<double> increments;  // relative velocity increment per iteration
   std::string failure;
+  double assembly_seconds = 0.0;  // wall-clock, summed over iterations
+  double solve_seconds = 0.0;     // LU factorization and solve
 };
 
 class FluidNewton {

@@ -6,8 +6,8 @@
 //               + τ_M ρ (c·∇N_a) r_M + τ_C (∇·u) ∇N_a
 //   continuity: ∫ N_a ∇·u + τ_M ∇N_a·r_M
 // with τ_M = [(2ρ/Δt)² + (2ρ|c|/h)² + (12μ/h²)²]^(-1/2), τ_C = h²/(6 τ_M),
-// h = 2(3V/4π)^(1/3). The tangent is exact for the Galerkin terms; in the stabilization
-// terms τ and the advecting velocity c are frozen (Picard on those parts only).
+// h = 2(3V/4π)^(1/3), c = u − w_mesh the convective velocity (ALE). The tangent is the
+// exact derivative of this residual (τ included), for quadratic Newton convergence.
 #include <array>
 
 #include <Eigen/Dense>
