@@ -55,7 +55,7 @@ void stabilized_tet(const TetState& s, const FluidProperties& fluid, double inve
   for (int a = 0; a < 4; ++a) c_mean += 0.25 * (s.u[a] - s.w_mesh[a]);
   const double B = std::pow(2.0 * rho / h, 2);
   const double tau_m = 1.0 / std::sqrt(std::pow(2.0 * rho * inverse_dt, 2) +
-                                       B * c_mean.squaredNorm() + std::pow(12.0 * mu / (h * h), 2));
+                                       B * c_mean.squaredNorm() + std::pow(24.0 * mu / (h * h), 2));
   const double tau_c = h * h / (6.0 * tau_m);
   const Eigen::Vector3d dtau_m = -std::pow(tau_m, 3) * B * c_mean / 4.0;
   const Eigen::Vector3d dtau_c = -tau_c / tau_m * dtau_m;

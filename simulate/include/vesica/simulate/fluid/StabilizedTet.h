@@ -5,9 +5,10 @@
 //   momentum:   ∫ N_a ρ(∂u/∂t + (c·∇)u) + 2μ ε(u)∇N_a − p ∇N_a − N_a ρ g
 //               + τ_M ρ (c·∇N_a) r_M + τ_C (∇·u) ∇N_a
 //   continuity: ∫ N_a ∇·u + τ_M ∇N_a·r_M
-// with τ_M = [(2ρ/Δt)² + (2ρ|c|/h)² + (12μ/h²)²]^(-1/2), τ_C = h²/(6 τ_M),
-// h = 2(3V/4π)^(1/3), c = u − w_mesh the convective velocity (ALE). The tangent is the
-// exact derivative of this residual (τ included), for quadratic Newton convergence.
+// with τ_M = [(2ρ/Δt)² + (2ρ|c|/h)² + (24μ/h²)²]^(-1/2), τ_C = h²/(6 τ_M),
+// h = 2(3V/4π)^(1/3) (docs/navier-stokes.md §2 says why 24), c = u − w_mesh the convective velocity
+// (ALE). The tangent is the exact derivative of this residual (τ included), for quadratic Newton
+// convergence.
 #include <array>
 
 #include <Eigen/Dense>
