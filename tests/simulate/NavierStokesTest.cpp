@@ -3,15 +3,22 @@
 // Poiseuille flow Q = π R⁴ Δp / (8 μ L). Meshes come from gmsh's OCC kernel. SI units.
 #include <gmsh.h>
 #include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
 
+#include "TestData.h"
 #include "vesica/simulate/fluid/BoundaryFaces.h"
 #include "vesica/simulate/fluid/FluidNewton.h"
 #include "vesica/simulate/fluid/FluidProblem.h"
+#include "vesica/simulate/fluid/FluidVtuSeries.h"
 #include "vesica/simulate/fluid/InflowPatch.h"
 #include "vesica/simulate/fluid/StabilizedTet.h"
 
@@ -94,6 +101,7 @@ struct HydrostaticError {
   double max_relative_p = 0.0;  // |p − ρ g depth| / (ρ g depth) over nodes below the top
   double max_absolute_p = 0.0;  // Pa
   int newton_iterations = 0;
+  Eigen::VectorXd state;  // the solution (m/s, Pa)
 };
 
 // Fluid at rest in a closed rigid container, pressure 0 at its highest node; `steps`
@@ -115,6 +123,7 @@ HydrostaticError solve_at_rest(const FluidMesh& mesh, int steps, double dt) {
     EXPECT_TRUE(report.converged) << report.failure;
     error.newton_iterations += report.iterations;
   }
+  error.state = state;
   const double rho_g = urine.density * urine.gravity.norm();
   for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i) {
     error.max_speed = std::max(error.max_speed, state.segment<3>(kDofsPerNode * i).norm());
@@ -188,6 +197,35 @@ TEST(NavierStokes, HydrostaticSphereStaysAtRestInTime) {
       mesh.tets.size(), e.max_speed, e.max_relative_p);
   EXPECT_LT(e.max_speed, 1e-6);
   EXPECT_LT(e.max_relative_p, 5e-3);
+}
+
+TEST(NavierStokes, SeriesOpensInVtkWithFieldsInOutputUnits) {
+  // The hydrostatic box written as a one-step series and read back with VTK's reader (the
+  // one ParaView uses): 60 mm of urine press 1000 · 9.81 · 0.06 Pa = 6.0020 cmH2O on the
+  // bottom (coordinates in mm, pressure in cmH2O).
+  const FluidMesh mesh = box_mesh(40, 30, 60, 6);
+  const HydrostaticError e = solve_at_rest(mesh, 0, 0.0);
+  const auto dir = vesica::test::scratch_dir("fluid-series");
+  FluidVtuSeries series(dir);
+  series.add_step(0.0, mesh, e.state);
+  series.finish();
+  ASSERT_TRUE(std::filesystem::exists(series.pvd_path()));
+
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName((dir / "fluid" / "step_0000.vtu").c_str());
+  reader->Update();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  ASSERT_EQ(grid->GetNumberOfPoints(), static_cast<vtkIdType>(mesh.nodes.size()));
+  ASSERT_EQ(grid->GetNumberOfCells(), static_cast<vtkIdType>(mesh.tets.size()));
+  vtkDataArray* pressure = grid->GetPointData()->GetArray("pressure_cmh2o");
+  vtkDataArray* velocity = grid->GetPointData()->GetArray("velocity_mm_s");
+  ASSERT_NE(pressure, nullptr);
+  ASSERT_NE(velocity, nullptr);
+  EXPECT_EQ(velocity->GetNumberOfComponents(), 3);
+  double bottom_cmh2o = 0.0;
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+    if (grid->GetPoint(i)[2] < 1e-9) bottom_cmh2o = pressure->GetTuple1(i);
+  EXPECT_NEAR(bottom_cmh2o, 1000.0 * 9.81 * 0.06 / 98.0665, 1e-6);
 }
 
 struct PoiseuilleResult {
