@@ -371,5 +371,40 @@ TEST(NavierStokes, PrescribedInflowIsConservedAndDevelopsPoiseuille) {
   EXPECT_LT(relative_wiggle, 0.02);
 }
 
+TEST(NavierStokes, UrethraOutletFollowsItsLaw) {
+  // 1 ml/s enters the tube through the inlet plug and must leave through the outlet at
+  // the pressure of the urethra law: p_out = p_open + R1 Q + R2 Q² = 20 + 0.2 + 0.05
+  // cmH2O with p_open = 20 cmH2O, R1 = 0.2 cmH2O/(ml/s), R2 = 0.05 cmH2O/(ml/s)².
+  const double cmh2o = 98.0665, ml = 1e-6, q_in = 1.0 * ml;
+  const FluidMesh mesh = tube_mesh(5, 50, 1.0, 5);  // coarse: only the law is checked
+  const BoundaryFaces faces(mesh);
+  const TubePatches tube = tube_patches(mesh, faces);
+  FluidBoundary boundary;
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i) {
+    if (tube.on_side[i])
+      boundary.velocity.push_back({i, {true, true, true}, Eigen::Vector3d::Zero()});
+    else if (tube.on_end[i] && mesh.nodes[i].z() > 25e-3)
+      boundary.velocity.push_back({i, {true, true, false}, Eigen::Vector3d::Zero()});
+  }
+  for (const auto& c : plug_inflow(faces, tube.inlet, tube.on_side, q_in))
+    boundary.velocity.push_back(c);
+  boundary.outlets.push_back(
+      {tube.outlet, 20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml)});
+  FluidProperties urine;
+  urine.gravity.setZero();
+  const FluidProblem problem(mesh, boundary, urine);
+  FluidNewton newton(problem);
+  Eigen::VectorXd state = problem.initial_state();
+  const FluidNewtonReport report = newton.solve(state, 0.0, state);
+  ASSERT_TRUE(report.converged) << report.failure;
+
+  const double p_out_cmh2o = state[problem.node_dof_count()] / cmh2o;
+  const double q_out = flow_rate(faces, tube.outlet, state);
+  std::printf("[ outlet ] Q_out = %.9f ml/s, p_out = %.9f cmH2O, %d Newton iterations\n",
+              q_out / ml, p_out_cmh2o, report.iterations);
+  EXPECT_NEAR(q_out / q_in, 1.0, 1e-8);
+  EXPECT_NEAR(p_out_cmh2o, 20.25, 1e-8);
+}
+
 }  // namespace
 }  // namespace vesica::simulate::fluid

@@ -22,11 +22,14 @@ FluidNewton::~FluidNewton() = default;
 
 namespace {
 
-// Largest magnitude of the velocity (fields 0-2) or pressure (field 3) entries.
-double field_max(const Eigen::VectorXd& v, bool pressure) {
+// Largest magnitude of the velocity (fields 0-2) or pressure (field 3 and the outlet
+// pressure after the node dofs) entries.
+double field_max(const Eigen::VectorXd& v, int node_dofs, bool pressure) {
   double m = 0.0;
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if ((i % kDofsPerNode == 3) == pressure) m = std::max(m, std::abs(v[i]));
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    const bool is_pressure = i >= node_dofs || i % kDofsPerNode == 3;
+    if (is_pressure == pressure) m = std::max(m, std::abs(v[i]));
+  }
   return m;
 }
 
@@ -65,8 +68,9 @@ FluidNewtonReport FluidNewton::solve(const Eigen::VectorXd& state_old, double in
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
     state += delta;
     report.iterations = it;
-    const double du = field_max(delta, false), dp = field_max(delta, true);
-    const double u_scale = field_max(state, false), p_scale = field_max(state, true);
+    const int n = problem_.node_dof_count();
+    const double du = field_max(delta, n, false), dp = field_max(delta, n, true);
+    const double u_scale = field_max(state, n, false), p_scale = field_max(state, n, true);
     const double rel_u = du / std::max(u_scale, options_.velocity_floor);
     report.increments.push_back(rel_u);
     vesica::log()->debug("fluid newton {}: |du| = {:.3e} m/s, |dp| = {:.3e} Pa", it, du, dp);

@@ -1,5 +1,6 @@
 #include "vesica/simulate/fluid/FluidProblem.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -31,6 +32,13 @@ FluidProblem::FluidProblem(const FluidMesh& mesh, const FluidBoundary& boundary,
   }
   for (const auto& f : boundary.pressure_faces)
     pressure_face_normals_.push_back(faces_.area_normal(f.nodes));
+  if (boundary.outlets.size() > 1) throw std::invalid_argument("more than one urethra outlet");
+  if (has_outlet()) {
+    if (!(boundary.outlets[0].r1 > 0.0) || boundary.outlets[0].r2 < 0.0)
+      throw std::invalid_argument("urethra law needs R1 > 0 and R2 >= 0");
+    for (const auto& f : boundary.outlets[0].faces)
+      outlet_face_normals_.push_back(faces_.area_normal(f));
+  }
 }
 
 Eigen::VectorXd FluidProblem::initial_state() const {
@@ -81,6 +89,7 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
     for (int v : face.nodes)
       residual.segment<3>(kDofsPerNode * v) += face.pressure * pressure_face_normals_[f] / 3.0;
   }
+  if (has_outlet()) add_outlet(state, residual, jacobian ? &triplets : nullptr);
   if (diagonal_scale == 0.0) diagonal_scale = 1.0;
   for (int i = 0; i < dof_count(); ++i) {
     if (!constrained_[i]) continue;
@@ -91,6 +100,36 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
     jacobian->resize(dof_count(), dof_count());
     jacobian->setFromTriplets(triplets.begin(), triplets.end());
   }
+}
+
+void FluidProblem::add_outlet(const Eigen::VectorXd& state, Eigen::VectorXd& residual,
+                              std::vector<Eigen::Triplet<double>>* triplets) const {
+  // Bordered system: the traction −p_out n puts p_out A n / 3 in each corner's momentum
+  // row; the last row is the law in pressure form, p_out − p_open − R1 Q − R2 Q|Q| (Pa),
+  // with Q = Σ_faces Σ_corners u·(A n)/3. Smooth in Q (unlike q(p), which has a kink at
+  // p_open), so Newton converges from a closed start.
+  const UrethraOutlet& law = boundary_.outlets[0];
+  const int last = node_dof_count();
+  const double p_out = state[last];
+  double q = 0.0;
+  for (size_t f = 0; f < law.faces.size(); ++f)
+    for (int v : law.faces[f])
+      q += state.segment<3>(kDofsPerNode * v).dot(outlet_face_normals_[f]) / 3.0;
+  residual[last] = p_out - law.opening_pressure - law.r1 * q - law.r2 * q * std::abs(q);
+  const double dlaw_dq = law.r1 + 2.0 * law.r2 * std::abs(q);
+  for (size_t f = 0; f < law.faces.size(); ++f) {
+    const Eigen::Vector3d corner = outlet_face_normals_[f] / 3.0;
+    for (int v : law.faces[f]) {
+      residual.segment<3>(kDofsPerNode * v) += p_out * corner;
+      if (!triplets) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int dof = kDofsPerNode * v + k;
+        if (!constrained_[dof]) triplets->emplace_back(dof, last, corner[k]);
+        triplets->emplace_back(last, dof, -dlaw_dq * corner[k]);
+      }
+    }
+  }
+  if (triplets) triplets->emplace_back(last, last, 1.0);
 }
 
 }  // namespace vesica::simulate::fluid

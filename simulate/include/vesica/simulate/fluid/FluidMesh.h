@@ -1,7 +1,8 @@
 #pragma once
 // The urine domain as linear tetrahedra and its boundary conditions. Positions in m.
 // Unknowns are node-major: dof 4 i + k is velocity component k (m/s) of node i for
-// k < 3, and its pressure (Pa) for k = 3.
+// k < 3, and its pressure (Pa) for k = 3; with a urethra outlet, one more dof at the end:
+// the outlet pressure p_out (Pa).
 #include <array>
 #include <vector>
 
@@ -27,12 +28,24 @@ struct PressureFace {
   double pressure = 0.0;       // p̄, Pa
 };
 
+// The open urethra outlet (physics.md §5): traction −p_out n on the outlet faces, p_out
+// one extra unknown (the last dof of the state) tied to the outflow Q = ∫ u·n dA by
+// p_out − p_open = R1 Q + R2 Q|Q|. While the urethra is closed (filling, or p below
+// p_open) the caller treats the outlet faces as wall instead.
+struct UrethraOutlet {
+  std::vector<std::array<int, 3>> faces;
+  double opening_pressure = 0.0;  // p_open, Pa
+  double r1 = 0.0;                // R1, Pa·s/m³ (> 0)
+  double r2 = 0.0;                // R2, Pa·s²/m⁶
+};
+
 struct FluidBoundary {
   std::vector<VelocityCondition> velocity;
   std::vector<PressureFace> pressure_faces;
   // Pressure of one node fixed (needed when no pressure face fixes the constant).
   int pinned_pressure_node = -1;
-  double pinned_pressure = 0.0;  // Pa
+  double pinned_pressure = 0.0;        // Pa
+  std::vector<UrethraOutlet> outlets;  // at most one
 };
 
 constexpr int kDofsPerNode = 4;

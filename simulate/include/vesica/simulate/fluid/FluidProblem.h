@@ -3,7 +3,7 @@
 // (docs/navier-stokes.md §2): residual R(U) and Jacobian ∂R/∂U with velocity conditions
 // and the pinned pressure imposed by row replacement, and pressure faces as the traction
 // −p̄ n. State U as in FluidMesh.h (m/s, Pa); residual rows in N (momentum) and m³/s
-// (continuity).
+// (continuity), Pa (outlet law).
 #include <vector>
 
 #include <Eigen/Dense>
@@ -21,7 +21,10 @@ class FluidProblem {
   // face that is not a boundary triangle.
   FluidProblem(const FluidMesh& mesh, const FluidBoundary& boundary, const FluidProperties& fluid);
 
-  int dof_count() const { return kDofsPerNode * static_cast<int>(mesh_.nodes.size()); }
+  int node_dof_count() const { return kDofsPerNode * static_cast<int>(mesh_.nodes.size()); }
+  // Node dofs, plus the outlet pressure when there is an outlet.
+  int dof_count() const { return node_dof_count() + (has_outlet() ? 1 : 0); }
+  bool has_outlet() const { return !boundary_.outlets.empty(); }
   const FluidMesh& mesh() const { return mesh_; }
   const BoundaryFaces& boundary_faces() const { return faces_; }
   const FluidProperties& fluid() const { return fluid_; }
@@ -34,11 +37,15 @@ class FluidProblem {
                 Eigen::VectorXd& residual, Eigen::SparseMatrix<double>* jacobian) const;
 
  private:
+  void add_outlet(const Eigen::VectorXd& state, Eigen::VectorXd& residual,
+                  std::vector<Eigen::Triplet<double>>* triplets) const;
+
   const FluidMesh& mesh_;
   FluidBoundary boundary_;
   FluidProperties fluid_;
   BoundaryFaces faces_;
   std::vector<Eigen::Vector3d> pressure_face_normals_;  // area-weighted, outward
+  std::vector<Eigen::Vector3d> outlet_face_normals_;    // area-weighted, outward
   std::vector<bool> constrained_;                       // per dof
   Eigen::VectorXd constrained_value_;                   // per dof
 };
