@@ -20,6 +20,7 @@
 #include "vesica/simulate/fluid/FluidProblem.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
 #include "vesica/simulate/fluid/InflowPatch.h"
+#include "vesica/simulate/fluid/MeshMotion.h"
 #include "vesica/simulate/fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
@@ -404,6 +405,61 @@ TEST(NavierStokes, UrethraOutletFollowsItsLaw) {
               q_out / ml, p_out_cmh2o, report.iterations);
   EXPECT_NEAR(q_out / q_in, 1.0, 1e-8);
   EXPECT_NEAR(p_out_cmh2o, 20.25, 1e-8);
+}
+
+// Signed volume of a tetrahedron, m³.
+double signed_volume(const std::vector<Eigen::Vector3d>& x, const std::array<int, 4>& t) {
+  return (x[t[1]] - x[t[0]]).dot((x[t[2]] - x[t[0]]).cross(x[t[3]] - x[t[0]])) / 6.0;
+}
+
+TEST(NavierStokes, HarmonicMeshMotionFollowsTheWall) {
+  // A 50 ml sphere (R = 22.9 mm) whose wall doubles its volume (scaling by 2^(1/3)).
+  const double R = 22.9e-3;
+  const FluidMesh mesh = sphere_mesh(1e3 * R, 4);
+  const BoundaryFaces faces(mesh);
+  std::vector<bool> on_wall(mesh.nodes.size(), false);
+  for (const auto& f : faces.faces())
+    for (int v : f) on_wall[v] = true;
+  const double s = std::cbrt(2.0);
+  std::vector<Eigen::Vector3d> scaling(mesh.nodes.size());
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) scaling[i] = (s - 1.0) * mesh.nodes[i];
+
+  // Uniform stiffness reproduces a linear displacement field exactly.
+  const HarmonicMeshMotion uniform(mesh, on_wall, {false});
+  const auto d_uniform = uniform.extend(scaling);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    worst = std::max(worst, (d_uniform[i] - scaling[i]).norm());
+  std::printf("[ mesh motion ] uniform stiffness, linear field: max error %.2e m\n", worst);
+  EXPECT_LT(worst, 1e-12 * R);
+
+  // Default (k = 1/V) under a non-linear bulge of the top on top of the scaling: no
+  // tetrahedron inverts, and the tetrahedra fill exactly the volume the moved wall
+  // encloses (divergence theorem over the outward wall triangles).
+  std::vector<Eigen::Vector3d> bulge = scaling;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) {
+    const double top = std::max(0.0, mesh.nodes[i].z() / R);
+    bulge[i].z() += 0.3 * R * top * top;
+  }
+  const HarmonicMeshMotion motion(mesh, on_wall);
+  const auto d = motion.extend(bulge);
+  std::vector<Eigen::Vector3d> moved(mesh.nodes.size());
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i) moved[i] = mesh.nodes[i] + d[i];
+  double tet_volume = 0.0, min_ratio = INFINITY;
+  for (const auto& t : mesh.tets) {
+    const double before = signed_volume(mesh.nodes, t), after = signed_volume(moved, t);
+    min_ratio = std::min(min_ratio, after / before);
+    tet_volume += std::abs(after);
+  }
+  double wall_volume = 0.0;
+  for (const auto& f : faces.faces())
+    wall_volume += moved[f[0]].dot(moved[f[1]].cross(moved[f[2]])) / 6.0;
+  std::printf(
+      "[ mesh motion ] 1/V stiffness, bulge: min V/V0 = %.3f, tets/wall volume - 1 = "
+      "%.1e\n",
+      min_ratio, tet_volume / wall_volume - 1.0);
+  EXPECT_GT(min_ratio, 0.0);
+  EXPECT_NEAR(tet_volume / wall_volume, 1.0, 1e-12);
 }
 
 }  // namespace
