@@ -52,13 +52,18 @@ int BoundaryFaces::owner(const std::array<int, 3>& face) const {
 }
 
 Eigen::Vector3d BoundaryFaces::area_normal(const std::array<int, 3>& face) const {
+  return area_normal(face, mesh_.nodes);
+}
+
+Eigen::Vector3d BoundaryFaces::area_normal(const std::array<int, 3>& face,
+                                           const std::vector<Eigen::Vector3d>& x) const {
   const auto& tet = mesh_.tets[owner(face)];
   int opposite = -1;
   for (int v : tet)
     if (v != face[0] && v != face[1] && v != face[2]) opposite = v;
-  const Eigen::Vector3d& a = mesh_.nodes[face[0]];
-  Eigen::Vector3d n = 0.5 * (mesh_.nodes[face[1]] - a).cross(mesh_.nodes[face[2]] - a);
-  return n.dot(mesh_.nodes[opposite] - a) > 0.0 ? Eigen::Vector3d(-n) : n;
+  const Eigen::Vector3d& a = x[face[0]];
+  Eigen::Vector3d n = 0.5 * (x[face[1]] - a).cross(x[face[2]] - a);
+  return n.dot(x[opposite] - a) > 0.0 ? Eigen::Vector3d(-n) : n;
 }
 
 double flow_rate(const BoundaryFaces& boundary, const std::vector<std::array<int, 3>>& faces,

@@ -36,14 +36,14 @@ double field_max(const Eigen::VectorXd& v, int node_dofs, bool pressure) {
 }  // namespace
 
 FluidNewtonReport FluidNewton::solve(const Eigen::VectorXd& state_old, double inverse_dt,
-                                     Eigen::VectorXd& state) {
+                                     Eigen::VectorXd& state, const AleFrame* frame) {
   FluidNewtonReport report;
   Eigen::VectorXd residual;
   Eigen::SparseMatrix<double> jacobian;
   for (int it = 1; it <= options_.max_iterations; ++it) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
-      problem_.assemble(state, state_old, inverse_dt, residual, &jacobian);
+      problem_.assemble(state, state_old, inverse_dt, residual, &jacobian, frame);
     } catch (const std::runtime_error& e) {
       report.failure = e.what();
       return report;

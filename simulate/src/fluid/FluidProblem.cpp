@@ -30,14 +30,12 @@ FluidProblem::FluidProblem(const FluidMesh& mesh, const FluidBoundary& boundary,
     constrained_[kDofsPerNode * boundary.pinned_pressure_node + 3] = true;
     constrained_value_[kDofsPerNode * boundary.pinned_pressure_node + 3] = boundary.pinned_pressure;
   }
-  for (const auto& f : boundary.pressure_faces)
-    pressure_face_normals_.push_back(faces_.area_normal(f.nodes));
+  for (const auto& f : boundary.pressure_faces) faces_.owner(f.nodes);  // throws if interior
   if (boundary.outlets.size() > 1) throw std::invalid_argument("more than one urethra outlet");
   if (has_outlet()) {
     if (!(boundary.outlets[0].r1 > 0.0) || boundary.outlets[0].r2 < 0.0)
       throw std::invalid_argument("urethra law needs R1 > 0 and R2 >= 0");
-    for (const auto& f : boundary.outlets[0].faces)
-      outlet_face_normals_.push_back(faces_.area_normal(f));
+    for (const auto& f : boundary.outlets[0].faces) faces_.owner(f);
   }
 }
 
@@ -50,7 +48,8 @@ Eigen::VectorXd FluidProblem::initial_state() const {
 
 void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd& state_old,
                             double inverse_dt, Eigen::VectorXd& residual,
-                            Eigen::SparseMatrix<double>* jacobian) const {
+                            Eigen::SparseMatrix<double>* jacobian, const AleFrame* frame) const {
+  const std::vector<Eigen::Vector3d>& x = frame ? frame->positions : mesh_.nodes;
   residual = Eigen::VectorXd::Zero(dof_count());
   std::vector<Eigen::Triplet<double>> triplets;
   if (jacobian) triplets.reserve(mesh_.tets.size() * 256);
@@ -64,7 +63,8 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
   for (const auto& tet : mesh_.tets) {
     for (int a = 0; a < 4; ++a) {
       const int dof = kDofsPerNode * tet[a];
-      s.x[a] = mesh_.nodes[tet[a]];
+      s.x[a] = x[tet[a]];
+      s.w_mesh[a] = frame ? frame->mesh_velocity[tet[a]] : Eigen::Vector3d::Zero();
       s.u[a] = state.segment<3>(dof);
       s.p[a] = state[dof + 3];
       s.u_old[a] = state_old.segment<3>(dof);
@@ -86,10 +86,11 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
   // Traction −p̄ n: the weak form's −∫ w·t̄ = +p̄ ∫ N_a n, i.e. p̄ A n / 3 per corner.
   for (size_t f = 0; f < boundary_.pressure_faces.size(); ++f) {
     const auto& face = boundary_.pressure_faces[f];
+    const Eigen::Vector3d area_normal = faces_.area_normal(face.nodes, x);
     for (int v : face.nodes)
-      residual.segment<3>(kDofsPerNode * v) += face.pressure * pressure_face_normals_[f] / 3.0;
+      residual.segment<3>(kDofsPerNode * v) += face.pressure * area_normal / 3.0;
   }
-  if (has_outlet()) add_outlet(state, residual, jacobian ? &triplets : nullptr);
+  if (has_outlet()) add_outlet(state, x, residual, jacobian ? &triplets : nullptr);
   if (diagonal_scale == 0.0) diagonal_scale = 1.0;
   for (int i = 0; i < dof_count(); ++i) {
     if (!constrained_[i]) continue;
@@ -102,7 +103,8 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
   }
 }
 
-void FluidProblem::add_outlet(const Eigen::VectorXd& state, Eigen::VectorXd& residual,
+void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Eigen::Vector3d>& x,
+                              Eigen::VectorXd& residual,
                               std::vector<Eigen::Triplet<double>>* triplets) const {
   // Bordered system: the traction −p_out n puts p_out A n / 3 in each corner's momentum
   // row; the last row is the law in pressure form, p_out − p_open − R1 Q − R2 Q|Q| (Pa),
@@ -111,14 +113,16 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, Eigen::VectorXd& res
   const UrethraOutlet& law = boundary_.outlets[0];
   const int last = node_dof_count();
   const double p_out = state[last];
+  std::vector<Eigen::Vector3d> corners;  // A n / 3 of each outlet face
   double q = 0.0;
-  for (size_t f = 0; f < law.faces.size(); ++f)
-    for (int v : law.faces[f])
-      q += state.segment<3>(kDofsPerNode * v).dot(outlet_face_normals_[f]) / 3.0;
+  for (const auto& face : law.faces) {
+    corners.push_back(faces_.area_normal(face, x) / 3.0);
+    for (int v : face) q += state.segment<3>(kDofsPerNode * v).dot(corners.back());
+  }
   residual[last] = p_out - law.opening_pressure - law.r1 * q - law.r2 * q * std::abs(q);
   const double dlaw_dq = law.r1 + 2.0 * law.r2 * std::abs(q);
   for (size_t f = 0; f < law.faces.size(); ++f) {
-    const Eigen::Vector3d corner = outlet_face_normals_[f] / 3.0;
+    const Eigen::Vector3d& corner = corners[f];
     for (int v : law.faces[f]) {
       residual.segment<3>(kDofsPerNode * v) += p_out * corner;
       if (!triplets) continue;

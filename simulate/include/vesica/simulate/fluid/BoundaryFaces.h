@@ -26,6 +26,9 @@ class BoundaryFaces {
   const FluidMesh& mesh() const { return mesh_; }
   // Area-weighted outward normal (|n| = area, m²) of a boundary triangle.
   Eigen::Vector3d area_normal(const std::array<int, 3>& face) const;
+  // The same with the nodes at `positions` (a moved mesh with the same connectivity).
+  Eigen::Vector3d area_normal(const std::array<int, 3>& face,
+                              const std::vector<Eigen::Vector3d>& positions) const;
 
  private:
   const FluidMesh& mesh_;

@@ -48,6 +48,13 @@ struct FluidBoundary {
   std::vector<UrethraOutlet> outlets;  // at most one
 };
 
+// The moving (ALE) configuration of one time step: node positions at t_{n+1} (m) and
+// the mesh velocity (m/s), e.g. (x_{n+1} − x_n)/Δt from HarmonicMeshMotion.
+struct AleFrame {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<Eigen::Vector3d> mesh_velocity;
+};
+
 constexpr int kDofsPerNode = 4;
 
 }  // namespace vesica::simulate::fluid

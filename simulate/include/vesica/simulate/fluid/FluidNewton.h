@@ -32,9 +32,10 @@ class FluidNewton {
   explicit FluidNewton(const FluidProblem& problem, FluidNewtonOptions options = {});
   ~FluidNewton();
 
-  // Updates state in place; inverse_dt = 0 for steady flow.
+  // Updates state in place; inverse_dt = 0 for steady flow; frame: the moved mesh (ALE),
+  // null for the fixed one.
   FluidNewtonReport solve(const Eigen::VectorXd& state_old, double inverse_dt,
-                          Eigen::VectorXd& state);
+                          Eigen::VectorXd& state, const AleFrame* frame = nullptr);
 
  private:
   struct Factorization;

@@ -32,22 +32,22 @@ class FluidProblem {
   // A state satisfying the velocity conditions and the pinned pressure (zero elsewhere).
   Eigen::VectorXd initial_state() const;
 
-  // inverse_dt = 1/Δt (1/s), 0 for steady flow; state_old is the previous time's state.
+  // inverse_dt = 1/Δt (1/s), 0 for steady flow; state_old is the previous time's state
+  // at the same nodes. frame: the moved mesh and its velocity (ALE); null = the fixed mesh.
   void assemble(const Eigen::VectorXd& state, const Eigen::VectorXd& state_old, double inverse_dt,
-                Eigen::VectorXd& residual, Eigen::SparseMatrix<double>* jacobian) const;
+                Eigen::VectorXd& residual, Eigen::SparseMatrix<double>* jacobian,
+                const AleFrame* frame = nullptr) const;
 
  private:
-  void add_outlet(const Eigen::VectorXd& state, Eigen::VectorXd& residual,
-                  std::vector<Eigen::Triplet<double>>* triplets) const;
+  void add_outlet(const Eigen::VectorXd& state, const std::vector<Eigen::Vector3d>& x,
+                  Eigen::VectorXd& residual, std::vector<Eigen::Triplet<double>>* triplets) const;
 
   const FluidMesh& mesh_;
   FluidBoundary boundary_;
   FluidProperties fluid_;
   BoundaryFaces faces_;
-  std::vector<Eigen::Vector3d> pressure_face_normals_;  // area-weighted, outward
-  std::vector<Eigen::Vector3d> outlet_face_normals_;    // area-weighted, outward
-  std::vector<bool> constrained_;                       // per dof
-  Eigen::VectorXd constrained_value_;                   // per dof
+  std::vector<bool> constrained_;      // per dof
+  Eigen::VectorXd constrained_value_;  // per dof
 };
 
 }  // namespace vesica::simulate::fluid
