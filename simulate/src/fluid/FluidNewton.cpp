@@ -40,6 +40,7 @@ FluidNewtonReport FluidNewton::solve(const Eigen::VectorXd& state_old, double in
   FluidNewtonReport report;
   Eigen::VectorXd residual;
   Eigen::SparseMatrix<double> jacobian;
+  problem_.apply_constraints(state);
   for (int it = 1; it <= options_.max_iterations; ++it) {
     const auto t0 = std::chrono::steady_clock::now();
     try {

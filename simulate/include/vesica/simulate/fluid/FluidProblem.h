@@ -31,6 +31,8 @@ class FluidProblem {
 
   // A state satisfying the velocity conditions and the pinned pressure (zero elsewhere).
   Eigen::VectorXd initial_state() const;
+  // Sets the constrained dofs of state to their values (the Jacobian assumes they hold).
+  void apply_constraints(Eigen::VectorXd& state) const;
 
   // inverse_dt = 1/Δt (1/s), 0 for steady flow; state_old is the previous time's state
   // at the same nodes. frame: the moved mesh and its velocity (ALE); null = the fixed mesh.
