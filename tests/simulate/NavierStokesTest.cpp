@@ -407,6 +407,54 @@ TEST(NavierStokes, UrethraOutletFollowsItsLaw) {
   EXPECT_NEAR(p_out_cmh2o, 20.25, 1e-8);
 }
 
+TEST(NavierStokes, OutletUnderGravityStaysHydrostatic) {
+  // A closed 100 ml sphere (R = 28.8 mm) whose top cap (z > 0.9 R) is the urethra outlet,
+  // under gravity, nothing flowing in: the urine stays at rest with p_out = p_open at the
+  // cap's centroid and p = p_open + ρ |g| (z_ref − z) below it.
+  const double R = 28.8e-3, cmh2o = 98.0665, ml = 1e-6;
+  const FluidMesh mesh = sphere_mesh(1e3 * R, 6);
+  const BoundaryFaces faces(mesh);
+  std::vector<std::array<int, 3>> outlet;
+  std::vector<bool> on_wall(mesh.nodes.size(), false);
+  double z_ref = 0.0, area = 0.0;
+  for (const auto& f : faces.faces()) {
+    const Eigen::Vector3d c = (mesh.nodes[f[0]] + mesh.nodes[f[1]] + mesh.nodes[f[2]]) / 3.0;
+    if (c.z() > 0.9 * R) {
+      outlet.push_back(f);
+      const double a = faces.area_normal(f).norm();
+      z_ref += a * c.z();
+      area += a;
+    } else {
+      for (int v : f) on_wall[v] = true;
+    }
+  }
+  z_ref /= area;
+  FluidBoundary boundary;
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i)
+    if (on_wall[i]) boundary.velocity.push_back({i, {true, true, true}, Eigen::Vector3d::Zero()});
+  boundary.outlets.push_back({outlet, 20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml)});
+  const FluidProperties urine;
+  const FluidProblem problem(mesh, boundary, urine);
+  FluidNewton newton(problem);
+  Eigen::VectorXd state = problem.initial_state();
+  const FluidNewtonReport report = newton.solve(state, 1.0, state);
+  ASSERT_TRUE(report.converged) << report.failure;
+  double max_speed = 0.0, max_relative_p = 0.0;
+  for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i) {
+    max_speed = std::max(max_speed, state.segment<3>(kDofsPerNode * i).norm());
+    const double exact = 20.0 * cmh2o + urine.density * 9.81 * (z_ref - mesh.nodes[i].z());
+    max_relative_p =
+        std::max(max_relative_p, std::abs(state[kDofsPerNode * i + 3] - exact) / exact);
+  }
+  std::printf(
+      "[ outlet ] sphere under gravity at rest: max |v| = %.2e m/s, max |Δp|/p = %.2e, "
+      "p_out = %.6f cmH2O\n",
+      max_speed, max_relative_p, state[problem.node_dof_count()] / cmh2o);
+  EXPECT_LT(max_speed, 1e-6);
+  EXPECT_LT(max_relative_p, 5e-3);
+  EXPECT_NEAR(state[problem.node_dof_count()] / cmh2o, 20.0, 1e-9);
+}
+
 // Signed volume of a tetrahedron, m³.
 double signed_volume(const std::vector<Eigen::Vector3d>& x, const std::array<int, 4>& t) {
   return (x[t[1]] - x[t[0]]).dot((x[t[2]] - x[t[0]]).cross(x[t[3]] - x[t[0]])) / 6.0;

@@ -48,6 +48,10 @@ Eigen::VectorXd FluidProblem::initial_state() const {
   Eigen::VectorXd state = Eigen::VectorXd::Zero(dof_count());
   for (int i = 0; i < dof_count(); ++i)
     if (constrained_[i]) state[i] = constrained_value_[i];
+  // Start the outlet at its opening pressure: from p_out = 0 the first Newton step would
+  // predict a backflow of (0 − p_open)/R1 (≈ 100 ml/s for the defaults), at a Reynolds
+  // number where Newton diverges.
+  if (has_outlet()) state[node_dof_count()] = boundary_.outlets[0].opening_pressure;
   return state;
 }
 
@@ -123,18 +127,31 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Ei
   const UrethraOutlet& law = boundary_.outlets[0];
   const int last = node_dof_count();
   const double p_out = state[last];
+  // p_out is the pressure at the outlet's centroid x_ref; over the patch the pressure has
+  // its hydrostatic part, p = p_out + ρ g·(x − x_ref) (∇p = ρ g). Without it a uniform p_out on a
+  // tilted or curved outlet drives a spurious circulation (and Newton diverged).
   std::vector<Eigen::Vector3d> corners;  // A n / 3 of each outlet face
-  double q = 0.0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  double area = 0.0, q = 0.0;
   for (const auto& face : law.faces) {
     corners.push_back(faces_.area_normal(face, x) / 3.0);
+    const double a = 3.0 * corners.back().norm();
+    centroid += a * (x[face[0]] + x[face[1]] + x[face[2]]) / 3.0;
+    area += a;
     for (int v : face) q += state.segment<3>(kDofsPerNode * v).dot(corners.back());
   }
+  centroid /= area;
+  auto hydrostatic = [&](int v) { return fluid_.density * fluid_.gravity.dot(x[v] - centroid); };
   residual[last] = p_out - law.opening_pressure - law.r1 * q - law.r2 * q * std::abs(q);
   const double dlaw_dq = law.r1 + 2.0 * law.r2 * std::abs(q);
   for (size_t f = 0; f < law.faces.size(); ++f) {
     const Eigen::Vector3d& corner = corners[f];
-    for (int v : law.faces[f]) {
-      residual.segment<3>(kDofsPerNode * v) += p_out * corner;
+    const auto& face = law.faces[f];
+    const double h_sum = hydrostatic(face[0]) + hydrostatic(face[1]) + hydrostatic(face[2]);
+    for (int v : face) {
+      // ∫ N_a p dA for p linear on the triangle: A (2 p_a + p_b + p_c) / 12.
+      const double h_mean = (h_sum + hydrostatic(v)) / 4.0;
+      residual.segment<3>(kDofsPerNode * v) += (p_out + h_mean) * corner;
       if (!triplets) continue;
       for (int k = 0; k < 3; ++k) {
         const int dof = kDofsPerNode * v + k;

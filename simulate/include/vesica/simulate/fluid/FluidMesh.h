@@ -28,8 +28,10 @@ struct PressureFace {
   double pressure = 0.0;       // p̄, Pa
 };
 
-// The open urethra outlet (physics.md §5): traction −p_out n on the outlet faces, p_out
-// one extra unknown (the last dof of the state) tied to the outflow Q = ∫ u·n dA by
+// The open urethra outlet (physics.md §5): traction −p n on the outlet faces with
+// p = p_out + ρ g·(x − x_ref) (p_out at the patch centroid x_ref, hydrostatic over the
+// patch), p_out one extra unknown (the last dof of the state) tied to the outflow
+// Q = ∫ u·n dA by
 // p_out − p_open = R1 Q + R2 Q|Q|. While the urethra is closed (filling, or p below
 // p_open) the caller treats the outlet faces as wall instead.
 struct UrethraOutlet {
