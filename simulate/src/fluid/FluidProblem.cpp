@@ -48,10 +48,34 @@ Eigen::VectorXd FluidProblem::initial_state() const {
   Eigen::VectorXd state = Eigen::VectorXd::Zero(dof_count());
   for (int i = 0; i < dof_count(); ++i)
     if (constrained_[i]) state[i] = constrained_value_[i];
-  // Start the outlet at its opening pressure: from p_out = 0 the first Newton step would
-  // predict a backflow of (0 − p_open)/R1 (≈ 100 ml/s for the defaults), at a Reynolds
-  // number where Newton diverges.
-  if (has_outlet()) state[node_dof_count()] = boundary_.outlets[0].opening_pressure;
+  // Start from the hydrostatic pressure through the outlet (at its opening pressure) or the
+  // pinned node. From p = 0 the momentum residual r_M = ∇p − ρg is large, and the SUPG
+  // terms of the exact tangent proportional to r_M (through τ(c) and c·∇w) then throw the
+  // first Newton step far off (it diverged with gravity and inflow); from p = 0 at the
+  // outlet the law would also predict a backflow of p_open/R1 (≈ 100 ml/s).
+  Eigen::Vector3d x_ref;
+  double p_ref = 0.0;
+  if (has_outlet()) {
+    const auto& faces = boundary_.outlets[0].faces;
+    double area = 0.0;
+    x_ref.setZero();
+    for (const auto& f : faces) {
+      const double a = faces_.area_normal(f).norm();
+      x_ref += a * (mesh_.nodes[f[0]] + mesh_.nodes[f[1]] + mesh_.nodes[f[2]]) / 3.0;
+      area += a;
+    }
+    x_ref /= area;
+    p_ref = boundary_.outlets[0].opening_pressure;
+    state[node_dof_count()] = p_ref;
+  } else if (boundary_.pinned_pressure_node >= 0) {
+    x_ref = mesh_.nodes[boundary_.pinned_pressure_node];
+    p_ref = boundary_.pinned_pressure;
+  } else {
+    return state;
+  }
+  for (std::size_t i = 0; i < mesh_.nodes.size(); ++i)
+    state[kDofsPerNode * i + 3] =
+        p_ref + fluid_.density * fluid_.gravity.dot(mesh_.nodes[i] - x_ref);
   return state;
 }
 

@@ -29,8 +29,8 @@ class FluidProblem {
   const BoundaryFaces& boundary_faces() const { return faces_; }
   const FluidProperties& fluid() const { return fluid_; }
 
-  // A state satisfying the velocity conditions and the pinned pressure, the outlet at its
-  // opening pressure, zero elsewhere.
+  // A state at rest satisfying the velocity conditions, with the hydrostatic pressure
+  // through the outlet (at its opening pressure) or the pinned node.
   Eigen::VectorXd initial_state() const;
   // Sets the constrained dofs of state to their values (the Jacobian assumes they hold).
   void apply_constraints(Eigen::VectorXd& state) const;
