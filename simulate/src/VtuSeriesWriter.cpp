@@ -36,8 +36,9 @@ std::string wall_vtu_text(const WallModel& wall, const std::vector<Eigen::Vector
   data_array(s, "Float64", "Points", 3, nn,
              [&](std::size_t i, int c) { return units::mm_from_m(x[i](c)); });
   s << "</Points>\n<Cells>\n";
-  data_array(s, "Int64", "connectivity", 3, ne,
-             [&](std::size_t e, int c) { return wall.triangles[e][c]; });
+  // One component: VTK's XML reader rejects a multi-component connectivity array.
+  data_array(s, "Int64", "connectivity", 1, 3 * ne,
+             [&](std::size_t k, int) { return wall.triangles[k / 3][k % 3]; });
   data_array(s, "Int64", "offsets", 1, ne, [&](std::size_t e, int) { return 3 * (e + 1); });
   data_array(s, "UInt8", "types", 1, ne, [&](std::size_t, int) { return 5; });
   s << "</Cells>\n<PointData Vectors=\"displacement_mm\">\n";
