@@ -46,6 +46,8 @@ struct Cli {
   std::string beta, tau_s;
   std::string reference = "scale", posture = "supine";
   bool no_void = false, no_gravity = false, filling_only = false, no_series = false;
+  bool dynamic = false;
+  double bossak_alpha = -0.1;
   WallOptions wall;
   CystometryProtocol protocol;
 };
@@ -144,6 +146,12 @@ int main(int argc, char** argv) {
   app.add_option("--support-kpa-per-mm", p.support_kpa_per_mm,
                  "spring stiffness of the support region")
       ->capture_default_str();
+  app.add_option("--wall-drag-pa-s-per-m", p.wall_drag_pa_s_per_m,
+                 "viscous drag of the surrounding tissue on the wall")
+      ->capture_default_str();
+  app.add_flag("--dynamic", c.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
+  app.add_option("--bossak-alpha", c.bossak_alpha, "Bossak alpha in [-1/3, 0]")
+      ->capture_default_str();
   app.add_flag("--no-series", c.no_series, "do not write series.pvd/series/*.vtu");
   add_common_options(app, common);
 
@@ -168,6 +176,10 @@ int main(int argc, char** argv) {
     RunOptions options;
     options.output_dir = c.output;
     options.write_series = !c.no_series;
+    if (!(c.bossak_alpha >= -1.0 / 3.0 && c.bossak_alpha <= 0.0))
+      usage_error("--bossak-alpha must lie in [-1/3, 0]");
+    options.dynamic = c.dynamic;
+    options.bossak_alpha = c.bossak_alpha;
     options.reference = c.wall.reference;
     Progress progress("simulate");  // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
@@ -177,6 +189,8 @@ int main(int argc, char** argv) {
     params["reference"] = c.reference;
     params["residual_ml"] = c.wall.residual_ml;
     params["posture"] = c.posture;
+    params["dynamic"] = c.dynamic;
+    if (c.dynamic) params["bossak_alpha"] = c.bossak_alpha;
     params["gravity"] = p.gravity;
     params["start_ml"] = p.start_ml;
     params["capacity_ml"] = p.capacity_ml;
@@ -188,6 +202,7 @@ int main(int argc, char** argv) {
     params["r2"] = p.r2_cmh2o_s2_per_ml2;
     params["detrusor_kpa"] = p.detrusor_kpa;
     params["straining_kpa"] = p.straining_kpa;
+    params["wall_drag_pa_s_per_m"] = p.wall_drag_pa_s_per_m;
     CystometryResult result;
     {
       PhaseTimer timer(record, "simulate");

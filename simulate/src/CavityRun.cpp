@@ -51,6 +51,8 @@ CavityRun::CavityRun(const WallModel& wall, const Material& material,
   loads_.wall_density = protocol.wall_density;
   loads_.support_stiffness = protocol.support_kpa_per_mm * 1e3 / 1e-3;  // kPa/mm → Pa/m
   set_time_loads(0.0);
+  if (options.dynamic)
+    dynamics_ = std::make_unique<BossakNewmark>(wall.node_count(), options.bossak_alpha);
   volume_ = V_reference_ = enclosed_volume(wall, x_);
   reference_rate_m3_s_ = units::m3s_from_ml_per_min(protocol.fill_rate_ml_min);
 }
@@ -87,6 +89,7 @@ bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_
       dt > 0.0 ? dt : std::abs(V_target_no_flow - volume_) / reference_rate_m3_s_;
   loads_.drag_stiffness = drag_dt > 0.0 ? protocol_.wall_drag_pa_s_per_m / drag_dt : 0.0;
   loads_.drag_anchor = x_saved;
+  if (dynamics_) loads_.inertia = dynamics_->inertia(x_saved, dt);
   CavityEquation cavity;
   cavity.volume_control = true;
   constexpr double theta = 0.5;  // trapezoidal outflow: second order, exact bookkeeping
@@ -108,6 +111,7 @@ bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_
     return false;
   }
   problem_.commit();
+  if (dynamics_) dynamics_->commit(x_saved, x_, dt);
   double dQ = 0.0;
   const double q_new = outlet ? outlet_flow(loads_.inside.p0, dQ) : 0.0;
   if (outlet) voided_ += dt * (theta * q_new + (1.0 - theta) * q_out_);

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "vesica/simulate/BossakNewmark.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MembraneProblem.h"
 #include "vesica/simulate/NewtonSolver.h"
@@ -65,7 +66,8 @@ class CavityRun {
   double t_ = 0.0, t_void_ = -1.0;
   double volume_ = 0.0, V0_ = 0.0, V_reference_ = 0.0;
   double infused_ = 0.0, voided_ = 0.0, q_out_ = 0.0;
-  double reference_rate_m3_s_ = 1e-6;  // infusion rate: pseudo-time of volume steps
+  double reference_rate_m3_s_ = 1e-6;        // infusion rate: pseudo-time of volume steps
+  std::unique_ptr<BossakNewmark> dynamics_;  // wall inertia; null = quasi-static
   std::string last_failure_;
   int steps_ = 0, iterations_ = 0, cutbacks_ = 0, max_iterations_ = 0;
 };

@@ -187,8 +187,7 @@ class CystometryDriver {
       const double V_before = run_.volume();
       // The membrane has no contact: never let a step drain more than half of what is
       // left above 1 ml, so the wall cannot collapse through itself.
-      if (run_.outflow() > 0.0)
-        dt = std::min(dt, 0.5 * (V_before - V_floor) / run_.outflow());
+      if (run_.outflow() > 0.0) dt = std::min(dt, 0.5 * (V_before - V_floor) / run_.outflow());
       run_.step(dt, 0.0, true);
       record();
       const double Q = run_.outflow();

@@ -170,7 +170,7 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
   EXPECT_EQ(plan.workdir, (dir / "study" / "out").lexically_normal());
 }
 
-TEST(PipelineFile, DemoPipelineChainsTheImagingStagesByTheirContracts) {
+TEST(PipelineFile, DemoPipelineChainsTheStagesByTheirContracts) {
   const fs::path file = source_dir() / "pipelines" / "demo.yaml";
   Diagnostics d;
   const auto plan = build_plan(vesica::pipelines::load_pipeline_file(file, d),
@@ -178,12 +178,13 @@ TEST(PipelineFile, DemoPipelineChainsTheImagingStagesByTheirContracts) {
   ASSERT_TRUE(d.empty()) << d.format(file.string());
   std::vector<std::string> ids;
   for (const auto& s : plan.stages) ids.push_back(s.id);
-  EXPECT_EQ(ids, (std::vector<std::string>{"phantom", "segment", "surface", "mesh", "compare"}));
-  // Each imaging stage depends on the one before it, found through the paths alone; compare
-  // reads only the measured recording until simulate joins the demo.
-  for (std::size_t i = 1; i < 4; ++i)
+  EXPECT_EQ(ids, (std::vector<std::string>{"phantom", "segment", "surface", "mesh", "simulate",
+                                           "compare"}));
+  // Each stage depends on the one before it, found through the paths alone; compare reads
+  // the simulation's history.
+  for (std::size_t i = 1; i < 5; ++i)
     EXPECT_EQ(plan.stages[i].deps, std::vector<std::size_t>{i - 1}) << ids[i];
-  EXPECT_TRUE(plan.stages[4].deps.empty());
+  EXPECT_EQ(plan.stages[5].deps, std::vector<std::size_t>{4});
   const auto& compare = plan.stages.back().argv;
   const auto measured = std::find(compare.begin(), compare.end(), "--measured");
   ASSERT_NE(measured, compare.end());

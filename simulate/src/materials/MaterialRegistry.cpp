@@ -37,8 +37,9 @@ std::vector<MaxwellBranch> branches_from(ParamReader& p) {
 std::unique_ptr<Material> make_neo_hookean(const MaterialSpec& spec) {
   ParamReader p(spec);
   const double mu = p.positive("mu", 5e3);
-  auto m = std::make_unique<DecoupledMaxwell>(
-      volumetric_from(p, mu), std::make_unique<NeoHookeanIsochoric>(mu), std::vector<MaxwellBranch>{});
+  auto m = std::make_unique<DecoupledMaxwell>(volumetric_from(p, mu),
+                                              std::make_unique<NeoHookeanIsochoric>(mu),
+                                              std::vector<MaxwellBranch>{});
   p.check_known_params();
   return m;
 }

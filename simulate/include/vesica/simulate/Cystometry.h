@@ -89,6 +89,10 @@ struct RunOptions {
   double max_fill_step_ml = 10.0;    // largest volume increment of a filling step
   double max_void_step_s = 0.5;
   int threads = 2;
+  // Bossak–Newmark dynamics of the wall (physics.md §3) instead of quasi-static steps;
+  // α_B ∈ [-1/3, 0] (0: no numerical damping).
+  bool dynamic = false;
+  double bossak_alpha = -0.1;
   ReferenceState reference = ReferenceState::Scale;
   NewtonOptions newton;
   // Called after every step with what is being done ("filling 120 ml") and the fraction
@@ -109,9 +113,9 @@ struct HistoryRow {
 
 struct CystometryResult {
   std::vector<HistoryRow> history;
-  nlohmann::json summary;  // the keys of summary.json
-  bool completed = false;  // false: a step failed after cut-backs; see failure
-  std::string failure;     // "step failed at t = .. s, V = .. ml: <reason>"
+  nlohmann::json summary;          // the keys of summary.json
+  bool completed = false;          // false: a step failed after cut-backs; see failure
+  std::string failure;             // "step failed at t = .. s, V = .. ml: <reason>"
   std::vector<std::string> notes;  // what the user should know (e.g. no voiding drive)
 };
 
