@@ -66,6 +66,7 @@ class CystometryDriver {
       fill();
       if (protocol_.hold_s > 0.0) hold();
       capacity_index_ = result_.history.size() - 1;
+      filled_ = true;
       if (protocol_.void_after_fill && !options_.filling_only) void_bladder();
       result_.completed = true;
     } catch (const CavityRun::StepFailed& e) {
@@ -74,6 +75,8 @@ class CystometryDriver {
       s << "step failed at t = " << run_.time() << " s, V = " << units::ml_from_m3(run_.volume())
         << " ml: " << e.what();
       result_.failure = s.str();
+      // Failed while filling: every row is filling, none is voiding.
+      if (!filled_ && !result_.history.empty()) capacity_index_ = result_.history.size() - 1;
       vesica::log()->error("{}", result_.failure);
     }
     frame(true);
@@ -266,6 +269,7 @@ class CystometryDriver {
   double mass_error_ = 0.0, max_stress_ = 0.0;
   double next_frame_ = 0.0, last_frame_ = -1.0;
   bool voiding_ = false;
+  bool filled_ = false;
 };
 
 }  // namespace
