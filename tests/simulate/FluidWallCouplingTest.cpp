@@ -1,7 +1,7 @@
 // Monolithic wall–urine coupling (level 2, docs/navier-stokes.md §3) on a coarse
 // neo-Hookean balloon (R = 23 mm, H = 3 mm, μ = 5 kPa, K = 1000 μ) filled with urine
 // through one inlet node:
-//  (c) slow filling: the urine pressure against the analytic balloon
+//  (c) slow filling (5 steps of 2 ml): the urine pressure against the analytic balloon
 //      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (physics.md §6), within 3 %, and the tet
 //      volume against V0 + ∫Q dt within 0.5 %;
 //  (d) wall 920 kg/m³ against urine 1000 kg/m³ with 1 ms steps: a sudden inflow and its
@@ -107,7 +107,7 @@ struct CoupledBalloon {
 }  // namespace
 
 TEST(FluidWallCoupling, SlowFillingFollowsTheBalloonAndConservesVolume) {
-  CoupledBalloon b(8);
+  CoupledBalloon b(10);
   const double V0 = b.coupling->fluid_volume();
   std::printf("[ coupling ] balloon: %zu wall triangles, %zu tets, %zu nodes, V0 = %.2f ml\n",
               b.wall.triangle_count(), b.mesh.tets.size(), b.mesh.nodes.size(), V0 * 1e6);
@@ -122,11 +122,13 @@ TEST(FluidWallCoupling, SlowFillingFollowsTheBalloonAndConservesVolume) {
     const double lambda = std::cbrt(V / V0), P = b.mean_wall_pressure();
     const double exact = balloon_pressure(lambda);
     std::printf(
-        "[ coupling ] step %d: %d iterations, V = %.3f ml (V0 + ∫Q dt = %.3f ml, %+.3f %%), "
+        "[ coupling ] step %d: %d iterations, V = %.3f ml (V0 + ∫Q dt = %.3f ml, %+.1e), "
         "λ = %.4f, P = %.2f Pa (analytic %.2f, %+.2f %%)\n",
-        s, r.iterations, V * 1e6, (V0 + filled) * 1e6, 100 * (V / (V0 + filled) - 1), lambda, P,
-        exact, 100 * (P / exact - 1));
-    EXPECT_NEAR(V, V0 + filled, 0.005 * (V0 + filled)) << "step " << s;
+        s, r.iterations, V * 1e6, (V0 + filled) * 1e6, V / (V0 + filled) - 1, lambda, P, exact,
+        100 * (P / exact - 1));
+    // Acceptance (c) asks 0.5 %; with the swept-volume continuity it is exact up to the
+    // Newton tolerance, so hold it to that (the end-of-step normals alone lost 0.04 %/step).
+    EXPECT_NEAR(V, V0 + filled, 1e-6 * (V0 + filled)) << "step " << s;
     EXPECT_NEAR(P, exact, 0.03 * exact) << "step " << s;
   }
 }

@@ -153,6 +153,33 @@ SparseMatrix wall_block(const MembraneProblem& wall, const std::vector<Eigen::Ve
   return block;
 }
 
+Eigen::Vector3d area_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                            const Eigen::Vector3d& c) {
+  return 0.5 * (b - a).cross(c - a);
+}
+
+// Geometric conservation at the wall (docs/navier-stokes.md §1). The continuity rows sum
+// to the wall flux through the end-of-step faces, Σ (A n)(1)·w̄, but the enclosed volume
+// changes by the swept volume Δt Σ ∫₀¹ (A n)(s) ds·w̄ (w̄ the face's mean wall velocity,
+// (A n)(s) quadratic in s, so Simpson's rule is exact). Adding the difference to the
+// continuity rows of the wall nodes (a third per corner) makes the tet volume change by
+// exactly ∫Q dt. It is O(Δx/R) of the wall flux and lagged in the Jacobian.
+void add_swept_volume(const WallModel& wall, const std::vector<Eigen::Vector3d>& x_old,
+                      const std::vector<Eigen::Vector3d>& x_new, double dt,
+                      const std::vector<int>& index, Eigen::VectorXd& residual) {
+  for (const auto& t : wall.triangles) {
+    const auto at = [&](double s, int k) { return x_old[t[k]] + s * (x_new[t[k]] - x_old[t[k]]); };
+    const Eigen::Vector3d end = area_normal(at(1, 0), at(1, 1), at(1, 2));
+    const Eigen::Vector3d swept = (area_normal(at(0, 0), at(0, 1), at(0, 2)) +
+                                   4.0 * area_normal(at(0.5, 0), at(0.5, 1), at(0.5, 2)) + end) /
+                                  6.0;
+    Eigen::Vector3d w = Eigen::Vector3d::Zero();
+    for (int a : t) w += (x_new[a] - x_old[a]) / (3.0 * dt);
+    const double correction = (swept - end).dot(w) / 3.0;
+    for (int a : t) residual[index[kDofsPerNode * a + 3]] += correction;
+  }
+}
+
 double max_abs(const Eigen::VectorXd& v) {
   return v.size() ? v.cwiseAbs().maxCoeff() : 0.0;
 }
@@ -202,6 +229,7 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
     }
     Eigen::VectorXd residual = rows * fluid_residual;
     residual.head(u.wall_free) += wall_assembly.residual;
+    add_swept_volume(wall_.wall(), x_old_, x_, dt, u.index, residual);
     const SparseMatrix jacobian = SparseMatrix(rows * fluid_jacobian * columns) +
                                   wall_block(wall_, x_, state_, wall_assembly.K, u.count);
     u.lu.compute(jacobian);
