@@ -194,6 +194,8 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
     for (int k = 0; k < 3; ++k)
       if (wall_.dof_map()[3 * inlet.node + k] >= 0)
         throw std::invalid_argument("the inlet node must be held fixed by the wall");
+  if (loads_in.inside.p0 != 0.0 || loads_in.inside.rho != 0.0)
+    throw std::invalid_argument("the urine's traction replaces loads.inside: set it to zero");
   WallLoads loads = loads_in;
   // Backward Euler for the wall too: M (v − v_n)/Δt = c M (x − x̂), c = 1/Δt²,
   // x̂ = x_n + Δt v_n, so that the wall velocity is the urine velocity at the wall.
@@ -225,7 +227,7 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
       u.problem.assemble(state_, state_old_, 1.0 / dt, fluid_residual, &fluid_jacobian, &frame);
     } catch (const std::exception& e) {
       report.failure = e.what();
-      return report;
+      break;
     }
     Eigen::VectorXd residual = rows * fluid_residual;
     residual.head(u.wall_free) += wall_assembly.residual;
@@ -235,12 +237,12 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
     u.lu.compute(jacobian);
     if (u.lu.info() != Eigen::Success) {
       report.failure = "UMFPACK could not factorize the coupled Jacobian";
-      return report;
+      break;
     }
     const Eigen::VectorXd dz = -u.lu.solve(residual);
     if (!dz.allFinite()) {
       report.failure = "non-finite Newton increment";
-      return report;
+      break;
     }
     wall_.apply_increment(dz.head(u.wall_free), x_wall);
     double dp = 0.0;
@@ -259,7 +261,12 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
     }
   }
   if (!report.converged) {
-    report.failure = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
+    if (report.failure.empty())
+      report.failure =
+          "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
+    // Back to the committed step, so that the caller may retry with a smaller Δt.
+    x_ = x_old_;
+    state_ = state_old_;
     return report;
   }
   // The last increment was below tolerance: evaluate once more at the final positions so
