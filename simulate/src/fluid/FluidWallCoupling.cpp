@@ -186,10 +186,8 @@ double max_abs(const Eigen::VectorXd& v) {
 
 }  // namespace
 
-CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
-                                       const InletNode& inlet) {
-  Unknowns& u = *unknowns_;
-  const std::size_t n_wall = wall_.wall().node_count();
+WallLoads FluidWallCoupling::step_loads(double dt, const WallLoads& loads_in,
+                                        const InletNode& inlet) const {
   if (inlet.node >= 0)
     for (int k = 0; k < 3; ++k)
       if (wall_.dof_map()[3 * inlet.node + k] >= 0)
@@ -199,84 +197,106 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
   WallLoads loads = loads_in;
   // Backward Euler for the wall too: M (v − v_n)/Δt = c M (x − x̂), c = 1/Δt²,
   // x̂ = x_n + Δt v_n, so that the wall velocity is the urine velocity at the wall.
+  const std::size_t n_wall = wall_.wall().node_count();
   loads.inertia.coefficient = 1.0 / (dt * dt);
   loads.inertia.target.resize(n_wall);
   for (std::size_t i = 0; i < n_wall; ++i)
     loads.inertia.target[i] = x_old_[i] + dt * wall_velocity_[i];
-  SparseMatrix columns, rows;
-  coupling_maps(u.index, u.is_wall_velocity, u.count, dt, columns, rows);
+  return loads;
+}
 
+Eigen::VectorXd FluidWallCoupling::newton_increment(double dt, const WallLoads& loads,
+                                                    const std::vector<Eigen::Vector3d>& x_wall,
+                                                    const Eigen::SparseMatrix<double>& columns,
+                                                    const Eigen::SparseMatrix<double>& rows) {
+  Unknowns& u = *unknowns_;
+  AleFrame frame;
+  frame.positions = x_;
+  frame.mesh_velocity.resize(x_.size());
+  for (std::size_t i = 0; i < x_.size(); ++i) frame.mesh_velocity[i] = (x_[i] - x_old_[i]) / dt;
+  WallAssembly wall_assembly;
+  Eigen::VectorXd fluid_residual;
+  SparseMatrix fluid_jacobian;
+  wall_.assemble(x_wall, loads, true, wall_assembly);
+  u.problem.assemble(state_, state_old_, 1.0 / dt, fluid_residual, &fluid_jacobian, &frame);
+  Eigen::VectorXd residual = rows * fluid_residual;
+  residual.head(u.wall_free) += wall_assembly.residual;
+  add_swept_volume(wall_.wall(), x_old_, x_, dt, u.index, residual);
+  const SparseMatrix jacobian = SparseMatrix(rows * fluid_jacobian * columns) +
+                                wall_block(wall_, x_, state_, wall_assembly.K, u.count);
+  u.lu.compute(jacobian);
+  if (u.lu.info() != Eigen::Success)
+    throw std::runtime_error("UMFPACK could not factorize the coupled Jacobian");
+  const Eigen::VectorXd dz = -u.lu.solve(residual);
+  if (!dz.allFinite()) throw std::runtime_error("non-finite Newton increment");
+  return dz;
+}
+
+double FluidWallCoupling::apply_urine_increment(const Eigen::VectorXd& dz) {
+  const Unknowns& u = *unknowns_;
+  double dp = 0.0;
+  for (std::size_t f = 0; f < u.index.size(); ++f) {
+    if (u.index[f] < 0 || u.is_wall_velocity[f]) continue;
+    state_[f] += dz[u.index[f]];
+    if (f % kDofsPerNode == 3) dp = std::max(dp, std::abs(dz[u.index[f]]));
+  }
+  return dp;
+}
+
+CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
+                                       const InletNode& inlet) {
+  const WallLoads loads = step_loads(dt, loads_in, inlet);
+  const std::size_t n_wall = wall_.wall().node_count();
+  SparseMatrix columns, rows;
+  coupling_maps(unknowns_->index, unknowns_->is_wall_velocity, unknowns_->count, dt, columns, rows);
   std::vector<Eigen::Vector3d> x_wall(x_old_.begin(), x_old_.begin() + n_wall);
   Eigen::AlignedBox3d box;
   for (const auto& p : x_wall) box.extend(p);
   const double size = box.diagonal().norm();
-  AleFrame frame;
-  WallAssembly wall_assembly;
-  Eigen::VectorXd fluid_residual;
-  SparseMatrix fluid_jacobian;
   CouplingReport report;
-  for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
-    report.iterations = iteration;
-    set_wall_velocities(x_wall, dt, inlet);
-    move_mesh(x_wall);
-    frame.positions = x_;
-    frame.mesh_velocity.resize(x_.size());
-    for (std::size_t i = 0; i < x_.size(); ++i) frame.mesh_velocity[i] = (x_[i] - x_old_[i]) / dt;
-    try {
-      wall_.assemble(x_wall, loads, true, wall_assembly);
-      u.problem.assemble(state_, state_old_, 1.0 / dt, fluid_residual, &fluid_jacobian, &frame);
-    } catch (const std::exception& e) {
-      report.failure = e.what();
-      break;
-    }
-    Eigen::VectorXd residual = rows * fluid_residual;
-    residual.head(u.wall_free) += wall_assembly.residual;
-    add_swept_volume(wall_.wall(), x_old_, x_, dt, u.index, residual);
-    const SparseMatrix jacobian = SparseMatrix(rows * fluid_jacobian * columns) +
-                                  wall_block(wall_, x_, state_, wall_assembly.K, u.count);
-    u.lu.compute(jacobian);
-    if (u.lu.info() != Eigen::Success) {
-      report.failure = "UMFPACK could not factorize the coupled Jacobian";
-      break;
-    }
-    const Eigen::VectorXd dz = -u.lu.solve(residual);
-    if (!dz.allFinite()) {
-      report.failure = "non-finite Newton increment";
-      break;
-    }
-    wall_.apply_increment(dz.head(u.wall_free), x_wall);
-    double dp = 0.0;
-    for (std::size_t f = 0; f < u.index.size(); ++f) {
-      if (u.index[f] < 0 || u.is_wall_velocity[f]) continue;
-      state_[f] += dz[u.index[f]];
-      if (f % kDofsPerNode == 3) dp = std::max(dp, std::abs(dz[u.index[f]]));
-    }
-    const double p_scale = std::max(1.0, max_abs(state_(Eigen::seqN(3, state_.size() / 4, 4))));
-    if (max_abs(dz.head(u.wall_free)) <= options_.position_tolerance * size &&
-        dp <= options_.pressure_tolerance * p_scale) {
+  try {
+    for (int iteration = 1; iteration <= options_.max_iterations && !report.converged;
+         ++iteration) {
+      report.iterations = iteration;
       set_wall_velocities(x_wall, dt, inlet);
       move_mesh(x_wall);
-      report.converged = true;
-      break;
+      const Eigen::VectorXd dz = newton_increment(dt, loads, x_wall, columns, rows);
+      const int wall_free = unknowns_->wall_free;
+      wall_.apply_increment(dz.head(wall_free), x_wall);
+      const double dp = apply_urine_increment(dz);
+      const double p_scale = std::max(
+          1.0, max_abs(state_(Eigen::seqN(3, state_.size() / kDofsPerNode, kDofsPerNode))));
+      report.converged = max_abs(dz.head(wall_free)) <= options_.position_tolerance * size &&
+                         dp <= options_.pressure_tolerance * p_scale;
     }
-  }
-  if (!report.converged) {
-    if (report.failure.empty())
+    if (!report.converged)
       report.failure =
           "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
+  } catch (const std::exception& e) {
+    report.failure = e.what();
+  }
+  if (!report.converged) {
     // Back to the committed step, so that the caller may retry with a smaller Δt.
     x_ = x_old_;
     state_ = state_old_;
     return report;
   }
+  commit(dt, loads, x_wall, inlet);
+  return report;
+}
+
+void FluidWallCoupling::commit(double dt, const WallLoads& loads,
+                               const std::vector<Eigen::Vector3d>& x_wall, const InletNode& inlet) {
+  set_wall_velocities(x_wall, dt, inlet);
+  move_mesh(x_wall);
   // The last increment was below tolerance: evaluate once more at the final positions so
   // that the committed wall history belongs to them.
+  WallAssembly wall_assembly;
   wall_.assemble(x_wall, loads, false, wall_assembly);
   wall_.commit();
-  for (std::size_t i = 0; i < n_wall; ++i) wall_velocity_[i] = (x_wall[i] - x_old_[i]) / dt;
+  for (std::size_t i = 0; i < x_wall.size(); ++i) wall_velocity_[i] = (x_wall[i] - x_old_[i]) / dt;
   x_old_ = x_;
   state_old_ = state_;
-  return report;
 }
 
 double FluidWallCoupling::fluid_volume() const {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 
 #include "vesica/simulate/MembraneProblem.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
@@ -73,6 +74,16 @@ class FluidWallCoupling {
   void set_wall_velocities(const std::vector<Eigen::Vector3d>& x_wall, double dt,
                            const InletNode& inlet);
   void move_mesh(const std::vector<Eigen::Vector3d>& x_wall);
+  WallLoads step_loads(double dt, const WallLoads& loads_in, const InletNode& inlet) const;
+  // Assembles the coupled residual and Jacobian at the current state and solves; throws
+  // std::runtime_error when an element, the mesh or the factorization fails.
+  Eigen::VectorXd newton_increment(double dt, const WallLoads& loads,
+                                   const std::vector<Eigen::Vector3d>& x_wall,
+                                   const Eigen::SparseMatrix<double>& columns,
+                                   const Eigen::SparseMatrix<double>& rows);
+  double apply_urine_increment(const Eigen::VectorXd& dz);  // returns max |Δp|
+  void commit(double dt, const WallLoads& loads, const std::vector<Eigen::Vector3d>& x_wall,
+              const InletNode& inlet);
 
   MembraneProblem& wall_;
   const FluidMesh& mesh_;
