@@ -1,0 +1,167 @@
+// Monolithic wall–urine coupling (level 2, docs/navier-stokes.md §3) on a coarse
+// neo-Hookean balloon (R = 23 mm, H = 3 mm, μ = 5 kPa, K = 1000 μ) filled with urine
+// through one inlet node:
+//  (c) slow filling (5 steps of 2 ml): the urine pressure against the analytic balloon
+//      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (physics.md §6), within 3 %, and the tet
+//      volume against V0 + ∫Q dt within 0.5 %;
+//  (d) wall 920 kg/m³ against urine 1000 kg/m³ with 1 ms steps: a sudden inflow and its
+//      stop do not blow up (bounded velocity, kinetic energy decays after the stop).
+// SI units.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "vesica/mesh/CavityMesher.h"
+#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/MembraneProblem.h"
+#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/fluid/FluidWallCoupling.h"
+
+using namespace vesica::simulate;
+using namespace vesica::simulate::fluid;
+
+namespace {
+
+constexpr double kR = 0.023, kH = 3e-3, kMu = 5e3;
+
+double balloon_pressure(double stretch) {
+  return 2.0 * kH / kR * kMu * (1.0 / stretch - std::pow(stretch, -7));
+}
+
+int extreme_node(const WallModel& wall, int axis, double sign) {
+  int best = 0;
+  for (int i = 1; i < static_cast<int>(wall.node_count()); ++i)
+    if (sign * wall.nodes[i][axis] > sign * wall.nodes[best][axis]) best = i;
+  return best;
+}
+
+// The urine tetrahedra of the wall as vesica-mesh builds them (wall nodes first).
+FluidMesh cavity_tetrahedra(const WallModel& wall) {
+  vesica::mesh::SurfaceMesh surface;
+  surface.points.resize(static_cast<Eigen::Index>(wall.node_count()), 3);
+  for (std::size_t i = 0; i < wall.node_count(); ++i) surface.points.row(i) = 1e3 * wall.nodes[i];
+  surface.triangles.resize(static_cast<Eigen::Index>(wall.triangle_count()), 3);
+  for (std::size_t t = 0; t < wall.triangle_count(); ++t)
+    for (int k = 0; k < 3; ++k) surface.triangles(t, k) = wall.triangles[t][k];
+  surface.region = Eigen::VectorXi::Ones(static_cast<Eigen::Index>(wall.triangle_count()));
+  const auto cavity = vesica::mesh::mesh_cavity(surface, {}, "balloon");
+  FluidMesh mesh;
+  for (Eigen::Index i = 0; i < cavity.nodes.rows(); ++i)
+    mesh.nodes.push_back(1e-3 * cavity.nodes.row(i).transpose());
+  for (Eigen::Index t = 0; t < cavity.tets.rows(); ++t)
+    mesh.tets.push_back(
+        {cavity.tets(t, 0), cavity.tets(t, 1), cavity.tets(t, 2), cavity.tets(t, 3)});
+  // mesh_cavity kept the wall nodes (it checks); undo the round-off of mm -> m.
+  for (std::size_t i = 0; i < wall.node_count(); ++i) mesh.nodes[i] = wall.nodes[i];
+  return mesh;
+}
+
+struct CoupledBalloon {
+  WallModel wall;
+  std::unique_ptr<Material> material;
+  std::unique_ptr<MembraneProblem> problem;
+  FluidMesh mesh;
+  std::unique_ptr<FluidWallCoupling> coupling;
+  int inlet = -1;
+
+  explicit CoupledBalloon(int n) {
+    wall = sphere_wall(kR, kH, n);
+    // The inlet node (top pole) is held in all directions; the bottom pole in x, y and
+    // the east point in y stop the rotations, so the sphere may grow about a moving centre.
+    inlet = extreme_node(wall, 2, 1.0);
+    wall.fixed[inlet] = {true, true, true};
+    wall.fixed[extreme_node(wall, 2, -1.0)] = {true, true, false};
+    wall.fixed[extreme_node(wall, 0, 1.0)] = {false, true, false};
+    material = make_material({"neo-hookean", {{"mu", kMu}, {"K", 1e3 * kMu}}});
+    problem = std::make_unique<MembraneProblem>(wall, *material, 2);
+    mesh = cavity_tetrahedra(wall);
+    FluidProperties urine;
+    urine.gravity.setZero();  // the analytic balloon has none
+    coupling = std::make_unique<FluidWallCoupling>(*problem, mesh, urine);
+  }
+
+  double mean_wall_pressure() const {
+    double p = 0.0;
+    for (std::size_t i = 0; i < wall.node_count(); ++i)
+      p += coupling->state()[kDofsPerNode * i + 3];
+    return p / static_cast<double>(wall.node_count());
+  }
+
+  double wall_kinetic_energy(double density) const {
+    double energy = 0.0;
+    for (std::size_t t = 0; t < wall.triangle_count(); ++t) {
+      const auto& tri = wall.triangles[t];
+      const double area = 0.5 * (wall.nodes[tri[1]] - wall.nodes[tri[0]])
+                                    .cross(wall.nodes[tri[2]] - wall.nodes[tri[0]])
+                                    .norm();
+      for (int a : tri)
+        energy += 0.5 * density * wall.thickness[t] * area / 3.0 *
+                  coupling->wall_velocity()[a].squaredNorm();
+    }
+    return energy;
+  }
+};
+
+}  // namespace
+
+TEST(FluidWallCoupling, SlowFillingFollowsTheBalloonAndConservesVolume) {
+  CoupledBalloon b(10);
+  const double V0 = b.coupling->fluid_volume();
+  std::printf("[ coupling ] balloon: %zu wall triangles, %zu tets, %zu nodes, V0 = %.2f ml\n",
+              b.wall.triangle_count(), b.mesh.tets.size(), b.mesh.nodes.size(), V0 * 1e6);
+  const double Q = 1e-6, dt = 2.0;  // 1 ml/s, 2 ml per step
+  WallLoads loads;
+  double filled = 0.0;
+  for (int s = 1; s <= 5; ++s) {
+    const CouplingReport r = b.coupling->step(dt, loads, {b.inlet, Q});
+    ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
+    filled += Q * dt;
+    const double V = b.coupling->fluid_volume();
+    const double lambda = std::cbrt(V / V0), P = b.mean_wall_pressure();
+    const double exact = balloon_pressure(lambda);
+    std::printf(
+        "[ coupling ] step %d: %d iterations, V = %.3f ml (V0 + ∫Q dt = %.3f ml, %+.1e), "
+        "λ = %.4f, P = %.2f Pa (analytic %.2f, %+.2f %%)\n",
+        s, r.iterations, V * 1e6, (V0 + filled) * 1e6, V / (V0 + filled) - 1, lambda, P, exact,
+        100 * (P / exact - 1));
+    // Acceptance (c) asks 0.5 %; with the swept-volume continuity it is exact up to the
+    // Newton tolerance, so hold it to that (the end-of-step normals alone lost 0.04 %/step).
+    EXPECT_NEAR(V, V0 + filled, 1e-6 * (V0 + filled)) << "step " << s;
+    EXPECT_NEAR(P, exact, 0.03 * exact) << "step " << s;
+  }
+}
+
+TEST(FluidWallCoupling, LightWallInDenseUrineStaysStable) {
+  // 920 kg/m³ wall against 1000 kg/m³ urine: a partitioned scheme would diverge here
+  // (added mass > wall mass); the monolithic step must stay bounded with 1 ms steps.
+  CoupledBalloon b(8);
+  const double V0 = b.coupling->fluid_volume();
+  WallLoads loads;
+  loads.wall_density = 920.0;
+  const double Q = 5e-6, dt = 1e-3;  // 5 ml/s switched on and off suddenly
+  double energy_at_stop = 0.0, max_speed = 0.0, filled = 0.0;
+  std::vector<double> energy;
+  for (int s = 1; s <= 24; ++s) {
+    const bool inflow = s <= 8;
+    const CouplingReport r = b.coupling->step(dt, loads, {b.inlet, inflow ? Q : 0.0});
+    ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
+    if (inflow) filled += Q * dt;
+    const Eigen::VectorXd& U = b.coupling->state();
+    for (std::size_t i = 0; i < b.mesh.nodes.size(); ++i)
+      max_speed = std::max(max_speed, U.segment<3>(kDofsPerNode * i).norm());
+    energy.push_back(b.coupling->fluid_kinetic_energy() + b.wall_kinetic_energy(920.0));
+    if (s == 8) energy_at_stop = energy.back();
+    std::printf("[ coupling ] dynamic step %2d: %d iterations, kinetic energy %.3e J\n", s,
+                r.iterations, energy.back());
+  }
+  const double V = b.coupling->fluid_volume();
+  std::printf("[ coupling ] dynamic: max |u| = %.3f m/s, V − V0 − ∫Q dt = %.2e ml\n", max_speed,
+              (V - V0 - filled) * 1e6);
+  EXPECT_LT(max_speed, 2.0);  // m/s; the inlet jet is ≈ 0.4 m/s
+  // After the stop nothing drives the urine: the energy must not grow.
+  for (std::size_t s = 9; s < energy.size(); ++s) EXPECT_LE(energy[s], energy_at_stop) << s + 1;
+  EXPECT_LT(energy.back(), 0.5 * energy_at_stop);
+  EXPECT_NEAR(V, V0 + filled, 0.005 * (V0 + filled));
+}
