@@ -67,7 +67,7 @@ nlohmann::json cystometry(int n, double target_s) {
   RunOptions o;
   const auto t0 = std::chrono::steady_clock::now();
   const CystometryResult r =
-      run_cystometry(wall, {"fibers", {{"mu", 5e3}, {"K", 10e3}, {"k1", 10e3}, {"k2", 1.0}}}, p, o);
+      run_cystometry(wall, {"fibers", {{"mu", 3e3}, {"K_per_mu", 1e3}, {"k1", 1e3}, {"k2", 1.0}}}, p, o);
   nlohmann::json j = {{"triangles", wall.triangle_count()},
                       {"completed", r.completed},
                       {"seconds", seconds_since(t0)},
