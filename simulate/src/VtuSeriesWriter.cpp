@@ -3,26 +3,11 @@
 #include <cstdio>
 #include <sstream>
 
+#include "VtkXmlText.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Units.h"
 
 namespace vesica::simulate {
-namespace {
-
-template <class F>
-void data_array(std::ostringstream& s, const char* type, const char* name, int components,
-                std::size_t count, const F& value) {
-  s << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\""
-    << components << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < count; ++i) {
-    for (int c = 0; c < components; ++c) s << value(i, c) << ' ';
-    s << '\n';
-  }
-  s << "</DataArray>\n";
-}
-
-}  // namespace
-
 std::string wall_vtu_text(const WallModel& wall, const std::vector<Eigen::Vector3d>& x,
                           const std::vector<MembraneStressOutput>& st) {
   std::ostringstream s;
@@ -33,29 +18,30 @@ std::string wall_vtu_text(const WallModel& wall, const std::vector<Eigen::Vector
        "<Array type=\"String\" Name=\"units\" NumberOfTuples=\"1\" format=\"ascii\">109 109 0"
        "</Array>\n</FieldData>\n";
   s << "<Piece NumberOfPoints=\"" << nn << "\" NumberOfCells=\"" << ne << "\">\n<Points>\n";
-  data_array(s, "Float64", "Points", 3, nn,
-             [&](std::size_t i, int c) { return units::mm_from_m(x[i](c)); });
+  vtk_data_array(s, "Float64", "Points", 3, nn,
+                 [&](std::size_t i, int c) { return units::mm_from_m(x[i](c)); });
   s << "</Points>\n<Cells>\n";
   // One component: VTK's XML reader rejects a multi-component connectivity array.
-  data_array(s, "Int64", "connectivity", 1, 3 * ne,
-             [&](std::size_t k, int) { return wall.triangles[k / 3][k % 3]; });
-  data_array(s, "Int64", "offsets", 1, ne, [&](std::size_t e, int) { return 3 * (e + 1); });
-  data_array(s, "UInt8", "types", 1, ne, [&](std::size_t, int) { return 5; });
+  vtk_data_array(s, "Int64", "connectivity", 1, 3 * ne,
+                 [&](std::size_t k, int) { return wall.triangles[k / 3][k % 3]; });
+  vtk_data_array(s, "Int64", "offsets", 1, ne, [&](std::size_t e, int) { return 3 * (e + 1); });
+  vtk_data_array(s, "UInt8", "types", 1, ne, [&](std::size_t, int) { return 5; });
   s << "</Cells>\n<PointData Vectors=\"displacement_mm\">\n";
-  data_array(s, "Float64", "displacement_mm", 3, nn,
-             [&](std::size_t i, int c) { return units::mm_from_m(x[i](c) - wall.nodes[i](c)); });
+  vtk_data_array(s, "Float64", "displacement_mm", 3, nn, [&](std::size_t i, int c) {
+    return units::mm_from_m(x[i](c) - wall.nodes[i](c));
+  });
   s << "</PointData>\n<CellData Scalars=\"region\">\n";
-  data_array(s, "Int32", "region", 1, ne, [&](std::size_t e, int) { return wall.region[e]; });
-  data_array(s, "Float64", "cauchy_principal_kpa", 2, ne, [&](std::size_t e, int c) {
+  vtk_data_array(s, "Int32", "region", 1, ne, [&](std::size_t e, int) { return wall.region[e]; });
+  vtk_data_array(s, "Float64", "cauchy_principal_kpa", 2, ne, [&](std::size_t e, int c) {
     return units::kpa_from_pa(c == 0 ? st[e].sigma1 : st[e].sigma2);
   });
-  data_array(s, "Float64", "tension_n_per_m", 2, ne, [&](std::size_t e, int c) {
+  vtk_data_array(s, "Float64", "tension_n_per_m", 2, ne, [&](std::size_t e, int c) {
     return (c == 0 ? st[e].sigma1 : st[e].sigma2) * st[e].thickness;
   });
-  data_array(s, "Float64", "thickness_mm", 1, ne,
-             [&](std::size_t e, int) { return units::mm_from_m(st[e].thickness); });
-  data_array(s, "Float64", "stretch", 2, ne,
-             [&](std::size_t e, int c) { return c == 0 ? st[e].stretch1 : st[e].stretch2; });
+  vtk_data_array(s, "Float64", "thickness_mm", 1, ne,
+                 [&](std::size_t e, int) { return units::mm_from_m(st[e].thickness); });
+  vtk_data_array(s, "Float64", "stretch", 2, ne,
+                 [&](std::size_t e, int c) { return c == 0 ? st[e].stretch1 : st[e].stretch2; });
   s << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   return s.str();
 }
@@ -72,12 +58,7 @@ void VtuSeriesWriter::add_step(double time_s, const WallModel& wall,
 }
 
 void VtuSeriesWriter::finish() {
-  std::ostringstream s;
-  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& [t, file] : steps_)
-    s << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
-  s << "</Collection>\n</VTKFile>\n";
-  write_text_atomically(pvd_path(), s.str());
+  write_text_atomically(pvd_path(), pvd_text(steps_));
 }
 
 }  // namespace vesica::simulate

@@ -3,23 +3,12 @@
 #include <cstdio>
 #include <sstream>
 
+#include "../VtkXmlText.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Units.h"
 
 namespace vesica::simulate::fluid {
 namespace {
-
-template <class F>
-void ascii_array(std::ostringstream& s, const char* type, const char* name, int components,
-                 std::size_t count, const F& value) {
-  s << "<DataArray type=\"" << type << "\" Name=\"" << name << "\" NumberOfComponents=\""
-    << components << "\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < count; ++i) {
-    for (int c = 0; c < components; ++c) s << value(i, c) << ' ';
-    s << '\n';
-  }
-  s << "</DataArray>\n";
-}
 
 constexpr int kVtkTetra = 10;
 
@@ -35,18 +24,19 @@ std::string fluid_vtu_text(const FluidMesh& mesh, const Eigen::VectorXd& state) 
        "<Array type=\"String\" Name=\"units\" NumberOfTuples=\"1\" format=\"ascii\">109 109 0"
        "</Array>\n</FieldData>\n";
   s << "<Piece NumberOfPoints=\"" << nn << "\" NumberOfCells=\"" << ne << "\">\n<Points>\n";
-  ascii_array(s, "Float64", "Points", 3, nn,
-              [&](std::size_t i, int c) { return units::mm_from_m(mesh.nodes[i](c)); });
+  vtk_data_array(s, "Float64", "Points", 3, nn,
+                 [&](std::size_t i, int c) { return units::mm_from_m(mesh.nodes[i](c)); });
   s << "</Points>\n<Cells>\n";
   // VTK wants connectivity as one flat single-component array.
-  ascii_array(s, "Int64", "connectivity", 1, 4 * ne,
-              [&](std::size_t k, int) { return mesh.tets[k / 4][k % 4]; });
-  ascii_array(s, "Int64", "offsets", 1, ne, [&](std::size_t e, int) { return 4 * (e + 1); });
-  ascii_array(s, "UInt8", "types", 1, ne, [&](std::size_t, int) { return kVtkTetra; });
+  vtk_data_array(s, "Int64", "connectivity", 1, 4 * ne,
+                 [&](std::size_t k, int) { return mesh.tets[k / 4][k % 4]; });
+  vtk_data_array(s, "Int64", "offsets", 1, ne, [&](std::size_t e, int) { return 4 * (e + 1); });
+  vtk_data_array(s, "UInt8", "types", 1, ne, [&](std::size_t, int) { return kVtkTetra; });
   s << "</Cells>\n<PointData Vectors=\"velocity_mm_s\" Scalars=\"pressure_cmh2o\">\n";
-  ascii_array(s, "Float64", "velocity_mm_s", 3, nn,
-              [&](std::size_t i, int c) { return units::mm_from_m(state[kDofsPerNode * i + c]); });
-  ascii_array(s, "Float64", "pressure_cmh2o", 1, nn, [&](std::size_t i, int) {
+  vtk_data_array(s, "Float64", "velocity_mm_s", 3, nn, [&](std::size_t i, int c) {
+    return units::mm_from_m(state[kDofsPerNode * i + c]);
+  });
+  vtk_data_array(s, "Float64", "pressure_cmh2o", 1, nn, [&](std::size_t i, int) {
     return units::cmh2o_from_pa(state[kDofsPerNode * i + 3]);
   });
   s << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
@@ -61,12 +51,7 @@ void FluidVtuSeries::add_step(double time_s, const FluidMesh& mesh, const Eigen:
 }
 
 void FluidVtuSeries::finish() {
-  std::ostringstream s;
-  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-  for (const auto& [t, file] : steps_)
-    s << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
-  s << "</Collection>\n</VTKFile>\n";
-  write_text_atomically(pvd_path(), s.str());
+  write_text_atomically(pvd_path(), pvd_text(steps_));
 }
 
 }  // namespace vesica::simulate::fluid
