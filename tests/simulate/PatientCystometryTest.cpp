@@ -83,7 +83,9 @@ TEST(PatientCystometry, RealCtBladderFillsTo350MlAndVoids) {
   double t_capacity = 0.0;
   for (const Row& r : rows) {
     EXPECT_NEAR(r.volume, 50.0 + r.infused - r.voided, 1e-6 * r.volume) << "t = " << r.t;
-    if (r.infused < 300.0 - 1e-9) EXPECT_NEAR(r.infused, 50.0 / 60.0 * r.t, 1e-6 * (1 + r.t));
+    if (r.infused < 300.0 - 1e-9) {
+      EXPECT_NEAR(r.infused, 50.0 / 60.0 * r.t, 1e-6 * (1 + r.t));
+    }
     if (t_capacity == 0.0 && r.infused >= 300.0 - 1e-6) t_capacity = r.t;
   }
   EXPECT_NEAR(t_capacity, 360.0, 1e-3);  // 300 ml at 50 ml/min
