@@ -21,7 +21,7 @@ int main() {
   pb.protocol.gravity = false;
   pb.protocol.void_after_fill = false;
   pb.run.filling_only = true;
-  pb.material = {"neo-hookean", {{"mu", 3e3}, {"K", 10e3}}};
+  pb.material = {"neo-hookean", {{"mu", 3e3}, {"K_per_mu", 1e3}}};  // the default wall
   const auto truth = vs::run_cystometry(pb.wall, pb.material, pb.protocol, pb.run);
   pb.measured_filling = vc::analyse(vc::recording_from_history(truth.history)).filling;
   vc::ParameterSpec mu = vc::parameter_spec("mu");
