@@ -8,25 +8,17 @@
 #include "vesica/core/Units.h"
 
 namespace vesica::simulate {
+namespace {
+constexpr int kVtkTriangle = 5;
+}  // namespace
+
 std::string wall_vtu_text(const WallModel& wall, const std::vector<Eigen::Vector3d>& x,
                           const std::vector<MembraneStressOutput>& st) {
   std::ostringstream s;
   s.precision(9);
   const std::size_t nn = wall.node_count(), ne = wall.triangle_count();
-  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
-       "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n<FieldData>\n"
-       "<Array type=\"String\" Name=\"units\" NumberOfTuples=\"1\" format=\"ascii\">109 109 0"
-       "</Array>\n</FieldData>\n";
-  s << "<Piece NumberOfPoints=\"" << nn << "\" NumberOfCells=\"" << ne << "\">\n<Points>\n";
-  vtk_data_array(s, "Float64", "Points", 3, nn,
-                 [&](std::size_t i, int c) { return units::mm_from_m(x[i](c)); });
-  s << "</Points>\n<Cells>\n";
-  // One component: VTK's XML reader rejects a multi-component connectivity array.
-  vtk_data_array(s, "Int64", "connectivity", 1, 3 * ne,
-                 [&](std::size_t k, int) { return wall.triangles[k / 3][k % 3]; });
-  vtk_data_array(s, "Int64", "offsets", 1, ne, [&](std::size_t e, int) { return 3 * (e + 1); });
-  vtk_data_array(s, "UInt8", "types", 1, ne, [&](std::size_t, int) { return 5; });
-  s << "</Cells>\n<PointData Vectors=\"displacement_mm\">\n";
+  vtu_mesh_mm(s, x, wall.triangles, kVtkTriangle);
+  s << "<PointData Vectors=\"displacement_mm\">\n";
   vtk_data_array(s, "Float64", "displacement_mm", 3, nn, [&](std::size_t i, int c) {
     return units::mm_from_m(x[i](c) - wall.nodes[i](c));
   });
@@ -42,7 +34,8 @@ std::string wall_vtu_text(const WallModel& wall, const std::vector<Eigen::Vector
                  [&](std::size_t e, int) { return units::mm_from_m(st[e].thickness); });
   vtk_data_array(s, "Float64", "stretch", 2, ne,
                  [&](std::size_t e, int c) { return c == 0 ? st[e].stretch1 : st[e].stretch2; });
-  s << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  s << "</CellData>\n";
+  vtu_end(s);
   return s.str();
 }
 
