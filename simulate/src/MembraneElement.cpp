@@ -56,10 +56,9 @@ MembraneResponse membrane_response(const MembraneGeometry& geo,
   // Geometric stiffness of the full S: the consistent tangent, also where the wall is in
   // compression (there it is negative; the tissue drag of the cavity run keeps the
   // system well-posed, CavityRun.cpp).
-  const Eigen::Matrix2d& S_tension = S;
   for (int a = 0; a < 3; ++a)
     for (int b = 0; b < 3; ++b) {
-      const double kg = HA * geo.dN.col(a).dot(S_tension * geo.dN.col(b));
+      const double kg = HA * geo.dN.col(a).dot(S * geo.dN.col(b));
       r.K.block<3, 3>(3 * a, 3 * b).diagonal().array() += kg;
     }
   return r;

@@ -130,6 +130,17 @@ void MembraneProblem::for_each_element(const Body& body) const {
   if (error) std::rethrow_exception(error);
 }
 
+template <class Spring>
+void MembraneProblem::for_each_node_spring(std::size_t n, const WallLoads& loads,
+                                           const Spring& spring) const {
+  if (loads.support_stiffness > 0.0 && n < wall_.support.size() && wall_.support[n])
+    spring(loads.support_stiffness * node_area_[n], wall_.nodes[n]);
+  if (loads.inertia.coefficient > 0.0)  // Bossak–Newmark: c M towards x̂
+    spring(loads.inertia.coefficient * loads.wall_density * node_mass_[n], loads.inertia.target[n]);
+  if (loads.drag_stiffness > 0.0 && loads.drag_anchor.size() == wall_.node_count())
+    spring(loads.drag_stiffness * node_area_[n], loads.drag_anchor[n]);
+}
+
 void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const WallLoads& loads,
                                bool with_tangent, WallAssembly& out) {
   auto* self = this;
@@ -166,20 +177,12 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     }
     out.volume += element_V_[e];
   }
-  // Wall weight (dead load), support springs pulling back to the reference position and
-  // the inertia of a dynamic step (a spring c M towards x̂, BossakNewmark.h).
-  const bool dynamic = loads.inertia.coefficient > 0.0;
-  const bool dragged = loads.drag_stiffness > 0.0 && loads.drag_anchor.size() == nn;
+  // Wall weight (dead load) and the node springs: support, inertia, tissue drag.
   for (std::size_t n = 0; n < nn; ++n) {
     f_ext.segment<3>(3 * n) += loads.wall_density * node_mass_[n] * loads.wall_gravity;
-    if (n < wall_.support.size() && wall_.support[n])
-      f_int.segment<3>(3 * n) += loads.support_stiffness * node_area_[n] * (x[n] - wall_.nodes[n]);
-    if (dynamic)
-      f_int.segment<3>(3 * n) += loads.inertia.coefficient * loads.wall_density * node_mass_[n] *
-                                 (x[n] - loads.inertia.target[n]);
-    if (dragged)
-      f_int.segment<3>(3 * n) +=
-          loads.drag_stiffness * node_area_[n] * (x[n] - loads.drag_anchor[n]);
+    for_each_node_spring(n, loads, [&](double k, const Eigen::Vector3d& anchor) {
+      f_int.segment<3>(3 * n) += k * (x[n] - anchor);
+    });
   }
   out.full_residual = f_int - f_ext;
   out.force_scale = std::max(f_int.norm(), f_ext.norm());
@@ -202,16 +205,11 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     for (int s = 0; s < 81; ++s)
       if (slots[s] >= 0) values[slots[s]] += k[s];
   }
-  for (std::size_t n = 0; n < nn; ++n) {
-    const bool supported = n < wall_.support.size() && wall_.support[n];
-    const double k =
-        (supported ? loads.support_stiffness * node_area_[n] : 0.0) +
-        (dynamic ? loads.inertia.coefficient * loads.wall_density * node_mass_[n] : 0.0) +
-        (dragged ? loads.drag_stiffness * node_area_[n] : 0.0);
-    if (k == 0.0) continue;
-    for (int i = 0; i < 3; ++i)
-      if (dof_[3 * n + i] >= 0) values[diagonal_slot_[dof_[3 * n + i]]] += k;
-  }
+  for (std::size_t n = 0; n < nn; ++n)
+    for_each_node_spring(n, loads, [&](double k, const Eigen::Vector3d&) {
+      for (int i = 0; i < 3; ++i)
+        if (dof_[3 * n + i] >= 0) values[diagonal_slot_[dof_[3 * n + i]]] += k;
+    });
 }
 
 void MembraneProblem::commit() {

@@ -21,22 +21,18 @@ NewtonSolver::NewtonSolver(MembraneProblem& problem, NewtonOptions options)
   Eigen::AlignedBox3d box;
   for (const auto& p : wall.nodes) box.extend(p);
   size_ = box.diagonal().norm();
-  std::vector<double> node_area(wall.node_count(), 0.0);
   double edges = 0.0;
-  for (const auto& t : wall.triangles) {
-    const Eigen::Vector3d &a = wall.nodes[t[0]], &b = wall.nodes[t[1]], &c = wall.nodes[t[2]];
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    for (int n : t) node_area[n] += area / 3.0;
-    edges += (b - a).norm() + (c - b).norm() + (a - c).norm();
-  }
+  for (const auto& t : wall.triangles)
+    for (int k = 0; k < 3; ++k) edges += (wall.nodes[t[(k + 1) % 3]] - wall.nodes[t[k]]).norm();
   mean_edge_ = wall.triangles.empty() ? size_ : edges / (3.0 * wall.triangle_count());
   foundation_area_.resize(static_cast<Eigen::Index>(problem.free_dof_count()));
   for (std::size_t g = 0; g < problem.dof_map().size(); ++g)
-    if (problem.dof_map()[g] >= 0) foundation_area_(problem.dof_map()[g]) = node_area[g / 3];
+    if (problem.dof_map()[g] >= 0)
+      foundation_area_(problem.dof_map()[g]) = problem.node_areas()[g / 3];
 }
 
-bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double dc_dp,
-                                 double eta, bool reuse, Eigen::VectorXd& du, double& dp,
+bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta,
+                                 bool reuse, Eigen::VectorXd& du, double& dp,
                                  std::string& failure) {
   WallAssembly& A = assembly_;
   const double added = eta - eta_in_K_;
@@ -142,7 +138,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     double eta = eta_;
     eta_in_K_ = 0.0;
     Eigen::VectorXd du;
-    double dp = 0.0;
+    double dp = 0.0, move = 0.0;
     // Modified-Newton reuse: with the wall already in equilibrium (r_ok) only the cavity
     // equation (first iteration of a step) or the increment test (last one) is unmet, the
     // correction is small and the last tangent, from this solve or the converged state of
@@ -153,7 +149,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
       if (!bordered_step(cavity, c, dc_dp, eta, reuse && attempt == 0, du, dp, report.failure))
         return report;
       reusable = true;
-      const double move = du.size() ? du.cwiseAbs().maxCoeff() : 0.0;
+      move = du.size() ? du.cwiseAbs().maxCoeff() : 0.0;
       if (max_move <= 0.0 || move <= max_move || attempt == 12) break;
       eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;
     }
@@ -161,7 +157,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     eta_ = eta > 1e-9 * stiffness_scale ? 0.1 * eta : 0.0;
     problem_.apply_increment(du, x);
     loads.inside.p0 += dp;
-    last_increment = du.size() ? du.cwiseAbs().maxCoeff() : 0.0;
+    last_increment = move;
   }
   report.failure = "no convergence in " + std::to_string(report.iterations) + " iterations";
   return report;

@@ -55,6 +55,8 @@ class MembraneProblem {
   std::size_t free_dof_count() const { return free_count_; }
   // Global dof (3 node + i) → free index or -1.
   const std::vector<int>& dof_map() const { return dof_; }
+  // Reference tributary area per node, a third of each adjacent triangle's (m²).
+  const std::vector<double>& node_areas() const { return node_area_; }
 
   // Evaluates every element at x with the committed history; tangent only when asked.
   // Throws std::runtime_error when an element fails (inverted, thickness iteration).
@@ -74,6 +76,10 @@ class MembraneProblem {
   void build_pattern();
   template <class Body>
   void for_each_element(const Body& body) const;
+  // Calls spring(k, anchor) for every node spring acting on node n (support, inertia,
+  // tissue drag): the force k (x - anchor) with k in N/m.
+  template <class Spring>
+  void for_each_node_spring(std::size_t n, const WallLoads& loads, const Spring& spring) const;
 
   const WallModel& wall_;
   const Material& material_;
