@@ -9,21 +9,6 @@
 namespace vesica::simulate {
 namespace {
 
-// Where p0 (= Pves) is measured: the bladder neck (outlet patch centroid), else the
-// lowest point of the wall.
-Eigen::Vector3d pressure_reference_point(const WallModel& wall, const Eigen::Vector3d& g) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int count = 0;
-  for (std::size_t e = 0; e < wall.triangle_count(); ++e)
-    if (wall.region[e] == static_cast<int>(Region::Outlet))
-      for (int n : wall.triangles[e]) sum += wall.nodes[n], ++count;
-  if (count > 0) return sum / count;
-  std::size_t lowest = 0;
-  for (std::size_t i = 1; i < wall.node_count(); ++i)
-    if (wall.nodes[i].dot(g) > wall.nodes[lowest].dot(g)) lowest = i;
-  return g.norm() > 0.0 ? wall.nodes[lowest] : surface_centroid(wall);
-}
-
 double ramp(double t, double duration) {
   if (t <= 0.0) return 0.0;
   return duration > 0.0 ? std::min(1.0, t / duration) : 1.0;

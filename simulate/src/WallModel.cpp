@@ -28,6 +28,19 @@ Eigen::Vector3d surface_centroid(const WallModel& wall) {
   return c / area;
 }
 
+Eigen::Vector3d pressure_reference_point(const WallModel& wall, const Eigen::Vector3d& g) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (std::size_t e = 0; e < wall.triangle_count(); ++e)
+    if (wall.region[e] == static_cast<int>(Region::Outlet))
+      for (int n : wall.triangles[e]) sum += wall.nodes[n], ++count;
+  if (count > 0) return sum / count;
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < wall.node_count(); ++i)
+    if (wall.nodes[i].dot(g) > wall.nodes[lowest].dot(g)) lowest = i;
+  return g.norm() > 0.0 ? wall.nodes[lowest] : surface_centroid(wall);
+}
+
 std::size_t fix_regions(WallModel& wall, const Eigen::Vector3d& down, double patch_radius_m) {
   wall.fixed.assign(wall.nodes.size(), {false, false, false});
   wall.support.assign(wall.nodes.size(), false);

@@ -29,6 +29,11 @@ double enclosed_volume(const WallModel& wall, const std::vector<Eigen::Vector3d>
 // Area-weighted centroid of the surface (m).
 Eigen::Vector3d surface_centroid(const WallModel& wall);
 
+// Where Pves is measured (the reference height of the urine pressure): the bladder neck
+// (centroid of the outlet patch's nodes), else the lowest node along g, else (no gravity)
+// the centroid.
+Eigen::Vector3d pressure_reference_point(const WallModel& wall, const Eigen::Vector3d& g);
+
 // Marks the nodes of outlet, inlet and fixed triangles fixed and support nodes elastic.
 // When nothing is fixed, holds the patch of nodes within patch_radius_m of the lowest
 // node along `down` so that the model has no rigid-body motion; returns how many nodes
