@@ -1,6 +1,6 @@
 #pragma once
-// Helpers of the end-to-end compare tests: run a command, read a file, make a small
-// wall mesh (.vtu) with a stress array for the wall-stress picture.
+// Helpers of the end-to-end compare tests (run_command is in ShellCommand.h): read a file,
+// make a small wall mesh (.vtu) with a stress array for the wall-stress picture.
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -8,25 +8,10 @@
 #include <sstream>
 #include <string>
 
+#include "ShellCommand.h"
 #include "TestData.h"
 
 namespace vesica::test {
-
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr together
-};
-
-inline CommandResult run_command(const std::string& command) {
-  CommandResult r;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe)) r.output += buf.data();
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
 
 inline std::string read_text(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -13,6 +13,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "HistoryCsv.h"
+#include "ShellCommand.h"
 #include "TestData.h"
 
 namespace fs = std::filesystem;
@@ -21,34 +23,9 @@ using namespace vesica::test;
 namespace {
 
 int run(const std::string& command, std::string& output) {
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return -1;
-  std::array<char, 4096> buf{};
-  while (std::fgets(buf.data(), buf.size(), pipe)) output += buf.data();
-  const int status = ::pclose(pipe);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-struct Row {
-  double t, infused, volume, pves, pabd, pdet, flow, voided;
-};
-
-std::vector<Row> read_history(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line,
-            "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml");
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    Row r{};
-    char c;
-    std::istringstream s(line);
-    s >> r.t >> c >> r.infused >> c >> r.volume >> c >> r.pves >> c >> r.pabd >> c >> r.pdet >> c >>
-        r.flow >> c >> r.voided;
-    rows.push_back(r);
-  }
-  return rows;
+  CommandResult r = run_command(command);
+  output += r.output;
+  return r.exit_code;
 }
 
 }  // namespace
@@ -81,7 +58,7 @@ TEST(PatientCystometry, RealCtBladderFillsTo350MlAndVoids) {
   EXPECT_NEAR(rows.front().volume, 50.0, 1e-6);
   EXPECT_NEAR(summary["capacity_ml"].get<double>(), 350.0, 1e-3);
   double t_capacity = 0.0;
-  for (const Row& r : rows) {
+  for (const HistoryCsvRow& r : rows) {
     EXPECT_NEAR(r.volume, 50.0 + r.infused - r.voided, 1e-6 * r.volume) << "t = " << r.t;
     if (r.infused < 300.0 - 1e-9) {
       EXPECT_NEAR(r.infused, 50.0 / 60.0 * r.t, 1e-6 * (1 + r.t));
