@@ -98,6 +98,7 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
       const int dof = kDofsPerNode * tet[a];
       s.x[a] = x[tet[a]];
       s.w_mesh[a] = frame ? frame->mesh_velocity[tet[a]] : Eigen::Vector3d::Zero();
+      s.mesh_follows[a] = frame && !frame->mesh_follows.empty() && frame->mesh_follows[tet[a]];
       s.u[a] = state.segment<3>(dof);
       s.p[a] = state[dof + 3];
       s.u_old[a] = state_old.segment<3>(dof);

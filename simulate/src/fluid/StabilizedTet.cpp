@@ -92,19 +92,24 @@ void stabilized_tet(const TetState& s, const FluidProperties& fluid, double inve
       const Eigen::Vector3d dNa = dN.row(a).transpose();
       for (int b = 0; b < 4; ++b) {
         const Eigen::Vector3d dNb = dN.row(b).transpose();
-        // ∂r_M/∂u_b = ρ(N_b/Δt + c·∇N_b) I + ρ N_b G: both places u enters (c·∇)u.
+        // ∂r_M/∂u_b = ρ(N_b/Δt + c·∇N_b) I + ρ N_b G: both places u enters (c·∇)u. The
+        // second (and every other term through c: τ, c·∇N_a) drops when the mesh
+        // follows node b, since then c does not depend on u_b.
+        const double through_c = s.mesh_follows[b] ? 0.0 : 1.0;
+        const Eigen::Vector3d dtau_m_b = through_c * dtau_m, dtau_c_b = through_c * dtau_c;
         const double scalar_b = rho * (inverse_dt * N[b] + c_dot_grad[b]);
-        const Eigen::Matrix3d d_inertia = scalar_b * Eigen::Matrix3d::Identity() + rho * N[b] * G;
+        const Eigen::Matrix3d d_inertia =
+            scalar_b * Eigen::Matrix3d::Identity() + through_c * rho * N[b] * G;
         const Eigen::Matrix3d k_uu =
             N[a] * d_inertia +
             mu * (dNa.dot(dNb) * Eigen::Matrix3d::Identity() + dNb * dNa.transpose()) +
-            rho * c_dot_grad[a] * (tau_m * d_inertia + r_m * dtau_m.transpose()) +
-            tau_m * rho * N[b] * r_m * dNa.transpose() +
-            dNa * (tau_c * dNb + div_u * dtau_c).transpose();
+            rho * c_dot_grad[a] * (tau_m * d_inertia + r_m * dtau_m_b.transpose()) +
+            through_c * tau_m * rho * N[b] * r_m * dNa.transpose() +
+            dNa * (tau_c * dNb + div_u * dtau_c_b).transpose();
         const Eigen::Vector3d k_up = -N[b] * dNa + tau_m * rho * c_dot_grad[a] * dNb;
         const Eigen::RowVector3d k_pu = N[a] * dNb.transpose() +
                                         tau_m * dNa.transpose() * d_inertia +
-                                        dNa.dot(r_m) * dtau_m.transpose();
+                                        dNa.dot(r_m) * dtau_m_b.transpose();
         const double k_pp = tau_m * dNa.dot(dNb);
         K.block<3, 3>(4 * a, 4 * b) += w * k_uu;
         K.block<3, 1>(4 * a, 4 * b + 3) += w * k_up;

@@ -55,6 +55,9 @@ struct FluidBoundary {
 struct AleFrame {
   std::vector<Eigen::Vector3d> positions;
   std::vector<Eigen::Vector3d> mesh_velocity;
+  // Per node (empty = none): the mesh velocity is the node's own velocity unknown (the
+  // wall nodes of the coupled problem), which the tangent accounts for (StabilizedTet.h).
+  std::vector<bool> mesh_follows;
 };
 
 constexpr int kDofsPerNode = 4;

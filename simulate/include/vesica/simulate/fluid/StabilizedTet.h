@@ -27,6 +27,10 @@ struct TetState {
   std::array<Eigen::Vector3d, 4> u_old;  // velocity at the previous time, m/s
   std::array<Eigen::Vector3d, 4> w_mesh{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
                                         Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  // Node a's mesh velocity is its velocity (a wall node of the coupled problem: both are
+  // the wall's (x − x_n)/Δt): its tangent column is then d/du_a with w_a = u_a, in which
+  // the convective velocity c = u − w does not change.
+  std::array<bool, 4> mesh_follows{false, false, false, false};
 };
 
 // Shape-function gradients (rows, 1/m) and volume (m³) of a tetrahedron; throws
