@@ -115,7 +115,7 @@ TEST(FluidWallCoupling, SlowFillingFollowsTheBalloonAndConservesVolume) {
   WallLoads loads;
   double filled = 0.0;
   for (int s = 1; s <= 5; ++s) {
-    const CouplingReport r = b.coupling->step(dt, loads, {b.inlet, Q});
+    const CouplingReport r = b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, Q));
     ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
     filled += Q * dt;
     const double V = b.coupling->fluid_volume();
@@ -145,7 +145,8 @@ TEST(FluidWallCoupling, LightWallInDenseUrineStaysStable) {
   std::vector<double> energy;
   for (int s = 1; s <= 24; ++s) {
     const bool inflow = s <= 8;
-    const CouplingReport r = b.coupling->step(dt, loads, {b.inlet, inflow ? Q : 0.0});
+    const CouplingReport r =
+        b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, inflow ? Q : 0.0));
     ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
     if (inflow) filled += Q * dt;
     const Eigen::VectorXd& U = b.coupling->state();

@@ -1,12 +1,16 @@
 #include "vesica/simulate/fluid/FluidWallCoupling.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 #include <Eigen/UmfPackSupport>
 
+#include "vesica/core/Log.h"
 #include "vesica/simulate/PressureLoad.h"
 #include "vesica/simulate/fluid/FluidProblem.h"
 #include "vesica/simulate/fluid/MeshMotion.h"
@@ -20,14 +24,29 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 // nodes], and where each urine dof (4 i + k) sits in z: column = how the urine state
 // depends on z, row = where the urine residual row goes.
 struct FluidWallCoupling::Unknowns {
-  Unknowns(const FluidMesh& mesh, const FluidProperties& fluid, const std::vector<bool>& on_wall)
-      : problem(mesh, FluidBoundary{}, fluid), motion(mesh, on_wall) {}
-  FluidProblem problem;  // no conditions: the coupling eliminates the wall velocities itself
-  HarmonicMeshMotion motion;
+  Unknowns(const FluidMesh& mesh, const FluidBoundary& boundary, const FluidProperties& fluid)
+      : problem(mesh, boundary, without_gravity(fluid)) {
+    // Newton corrects the solve error at the next iteration anyway: no refinement steps.
+    lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+  }
+  // The urine equations are solved for the modified pressure p̃ = p − ρ g·(x − x_h): the
+  // body force ρ g and the gradient of the hydrostatic part cancel exactly (also in the
+  // discrete P1 form and in the SUPG/PSPG residual), and the hydrostatic part acts on the
+  // wall as a load whose geometric stiffness the wall's Jacobian has exactly. Lagging it
+  // through the interior geometry instead made Newton diverge on a bladder with gravity
+  // (ρ g ≈ 1e4 Pa/m against a drag stiffness of the same size).
+  static FluidProperties without_gravity(FluidProperties fluid) {
+    fluid.gravity.setZero();
+    return fluid;
+  }
+  // No velocity conditions: the coupling eliminates the wall velocities itself. With the
+  // outlet open, its law and p_out (the last dof).
+  FluidProblem problem;
   std::vector<int> index;  // urine dof -> z, −1 = not an unknown (fixed wall dof)
   std::vector<bool> is_wall_velocity;
   int wall_free = 0, count = 0;
   Eigen::UmfPackLU<SparseMatrix> lu;
+  bool analyzed = false;  // the pattern is fixed until the unknowns change (outlet opens)
 };
 
 namespace {
@@ -38,16 +57,31 @@ std::vector<bool> wall_flags(std::size_t nodes, std::size_t wall_nodes) {
   return flags;
 }
 
-// Σ over the faces of `node` of (A n)/3 = ∫ N_node n dA: the P1 flux of a unit velocity
-// at that node through the boundary (m²).
-Eigen::Vector3d node_flux_vector(const WallModel& wall, const std::vector<Eigen::Vector3d>& x,
-                                 int node) {
-  Eigen::Vector3d m = Eigen::Vector3d::Zero();
-  for (const auto& t : wall.triangles) {
-    if (t[0] != node && t[1] != node && t[2] != node) continue;
-    m += (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]) / 6.0;
+// The nodes of a patch of wall triangles that lie in no triangle outside it (the rim
+// nodes are shared with the rest of the wall, which holds them at its own velocity).
+std::vector<int> inner_nodes(const WallModel& wall, const std::vector<std::array<int, 3>>& patch) {
+  std::set<std::array<int, 3>> in_patch;
+  for (auto f : patch) {
+    std::sort(f.begin(), f.end());
+    in_patch.insert(f);
   }
-  return m;
+  std::set<int> candidates, rim;
+  for (const auto& f : patch) candidates.insert(f.begin(), f.end());
+  for (auto t : wall.triangles) {
+    std::sort(t.begin(), t.end());
+    if (!in_patch.count(t)) rim.insert(t.begin(), t.end());
+  }
+  std::vector<int> inner;
+  for (int v : candidates)
+    if (!rim.count(v)) inner.push_back(v);
+  return inner;
+}
+
+// (A n)/3 of a wall triangle at positions x: the P1 flux of a unit velocity at one corner
+// through it (m², outward for the outward-oriented wall).
+Eigen::Vector3d corner_area_normal(const std::array<int, 3>& t,
+                                   const std::vector<Eigen::Vector3d>& x) {
+  return (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]) / 6.0;
 }
 
 }  // namespace
@@ -60,7 +94,19 @@ FluidWallCoupling::FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mes
   for (std::size_t i = 0; i < n_wall; ++i)
     if ((mesh.nodes[i] - wall.wall().nodes[i]).norm() > 1e-9)
       throw std::invalid_argument("tet mesh does not start with the wall nodes");
-  unknowns_ = std::make_unique<Unknowns>(mesh, fluid, wall_flags(mesh.nodes.size(), n_wall));
+  unknowns_ = std::make_unique<Unknowns>(mesh, FluidBoundary{}, fluid);
+  Eigen::AlignedBox3d box;
+  for (const auto& p : wall.wall().nodes) box.extend(p);
+  x_hydrostatic_ = box.center();
+  foundation_area_.assign(wall.free_dof_count(), 0.0);
+  for (std::size_t g = 0; g < wall.dof_map().size(); ++g)
+    if (wall.dof_map()[g] >= 0) foundation_area_[wall.dof_map()[g]] = wall.node_areas()[g / 3];
+  double edges = 0.0;
+  for (const auto& t : wall.wall().triangles)
+    for (int k = 0; k < 3; ++k)
+      edges += (wall.wall().nodes[t[(k + 1) % 3]] - wall.wall().nodes[t[k]]).norm();
+  mean_edge_ = edges / (3.0 * static_cast<double>(wall.wall().triangle_count()));
+  motion_ = std::make_unique<HarmonicMeshMotion>(mesh, wall_flags(mesh.nodes.size(), n_wall));
   build_unknowns();
   x_ = x_old_ = mesh.nodes;
   wall_velocity_.assign(n_wall, Eigen::Vector3d::Zero());
@@ -73,36 +119,67 @@ void FluidWallCoupling::build_unknowns() {
   Unknowns& u = *unknowns_;
   const int n_wall = static_cast<int>(wall_.wall().node_count());
   const int n = static_cast<int>(mesh_.nodes.size());
+  // With the urethra open, the urine moves freely through the outlet's inner nodes (the
+  // wall holds them, so they have no wall dofs): their velocities are urine unknowns.
+  std::vector<bool> free_urine(n, false);
+  if (outlet_open_)
+    for (int v : inner_nodes(wall_.wall(), outlet_.faces)) free_urine[v] = true;
   u.wall_free = static_cast<int>(wall_.free_dof_count());
-  u.index.assign(kDofsPerNode * n, -1);
-  u.is_wall_velocity.assign(kDofsPerNode * n, false);
+  u.index.assign(u.problem.dof_count(), -1);
+  u.is_wall_velocity.assign(u.problem.dof_count(), false);
   int next = u.wall_free;
   for (int i = n_wall; i < n; ++i)
     for (int k = 0; k < kDofsPerNode; ++k) u.index[kDofsPerNode * i + k] = next++;
   for (int i = 0; i < n_wall; ++i) {
     for (int k = 0; k < 3; ++k) {
+      if (free_urine[i]) {
+        u.index[kDofsPerNode * i + k] = next++;
+        continue;
+      }
       u.index[kDofsPerNode * i + k] = wall_.dof_map()[3 * i + k];
       u.is_wall_velocity[kDofsPerNode * i + k] = true;
     }
     u.index[kDofsPerNode * i + 3] = next++;
   }
+  if (u.problem.has_outlet()) u.index[u.problem.node_dof_count()] = next++;
   u.count = next;
 }
 
 void FluidWallCoupling::set_wall_velocities(const std::vector<Eigen::Vector3d>& x_wall, double dt,
-                                            const InletNode& inlet) {
+                                            const Inflow& inflow) {
+  const Unknowns& u = *unknowns_;
   for (std::size_t i = 0; i < x_wall.size(); ++i)
-    state_.segment<3>(kDofsPerNode * i) = (x_wall[i] - x_old_[i]) / dt;
-  if (inlet.node < 0) return;
-  // Into the urine: u·m = −Q with m = ∫ N n dA on the current faces.
-  const Eigen::Vector3d m = node_flux_vector(wall_.wall(), x_wall, inlet.node);
-  state_.segment<3>(kDofsPerNode * inlet.node) = -inlet.flow_rate * m / m.squaredNorm();
+    if (u.is_wall_velocity[kDofsPerNode * i])
+      state_.segment<3>(kDofsPerNode * i) = (x_wall[i] - x_old_[i]) / dt;
+  if (inflow.faces.empty()) return;
+  // Plug along the inward node normals of the inner nodes, scaled so that the P1 flux
+  // −Σ_faces Σ_corners u·(A n)/3 is exactly the rate on the current faces.
+  std::map<int, Eigen::Vector3d> direction;
+  for (int v : inner_nodes(wall_.wall(), inflow.faces)) direction[v].setZero();
+  for (const auto& f : inflow.faces) {
+    const Eigen::Vector3d inward = -corner_area_normal(f, x_wall).normalized();
+    for (int v : f)
+      if (auto it = direction.find(v); it != direction.end()) it->second += inward;
+  }
+  double unit_inflow = 0.0;
+  for (auto& [v, d] : direction) d.normalize();
+  for (const auto& f : inflow.faces) {
+    const Eigen::Vector3d m = corner_area_normal(f, x_wall);
+    for (int v : f)
+      if (auto it = direction.find(v); it != direction.end()) unit_inflow -= it->second.dot(m);
+  }
+  for (const auto& [v, d] : direction)
+    state_.segment<3>(kDofsPerNode * v) = inflow.flow_rate / unit_inflow * d;
+}
+
+void FluidWallCoupling::move_wall_nodes(const std::vector<Eigen::Vector3d>& x_wall) {
+  std::copy(x_wall.begin(), x_wall.end(), x_.begin());
 }
 
 void FluidWallCoupling::move_mesh(const std::vector<Eigen::Vector3d>& x_wall) {
   std::vector<Eigen::Vector3d> d(mesh_.nodes.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < x_wall.size(); ++i) d[i] = x_wall[i] - mesh_.nodes[i];
-  d = unknowns_->motion.extend(d);
+  d = motion_->extend(d);
   for (std::size_t i = 0; i < d.size(); ++i) x_[i] = mesh_.nodes[i] + d[i];
 }
 
@@ -180,6 +257,43 @@ void add_swept_volume(const WallModel& wall, const std::vector<Eigen::Vector3d>&
   }
 }
 
+// The patch's inner nodes take their velocity from the inflow or the outlet, so the wall
+// must hold them; its rim nodes keep the wall's velocity.
+void require_held_inner_nodes(const MembraneProblem& wall,
+                              const std::vector<std::array<int, 3>>& patch, const char* what) {
+  const std::vector<int> inner = inner_nodes(wall.wall(), patch);
+  if (inner.empty()) throw std::invalid_argument(std::string(what) + " patch has no inner node");
+  for (int v : inner)
+    for (int k = 0; k < 3; ++k)
+      if (wall.dof_map()[3 * v + k] >= 0)
+        throw std::invalid_argument(std::string(what) + " node " + std::to_string(v) +
+                                    " must be held fixed by the wall");
+}
+
+// Area-weighted mean of the nodal urine pressure over a patch of wall triangles (Pa).
+double patch_mean_pressure(const std::vector<std::array<int, 3>>& patch,
+                           const std::vector<Eigen::Vector3d>& x, const Eigen::VectorXd& state) {
+  double area = 0.0, p = 0.0;
+  for (const auto& f : patch) {
+    const double a = corner_area_normal(f, x).norm();
+    for (int v : f) p += a * state[kDofsPerNode * v + 3];
+    area += 3.0 * a;
+  }
+  return p / area;
+}
+
+Eigen::Vector3d patch_centroid(const std::vector<std::array<int, 3>>& patch,
+                               const std::vector<Eigen::Vector3d>& x) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  double area = 0.0;
+  for (const auto& f : patch) {
+    const double a = corner_area_normal(f, x).norm();
+    c += a * (x[f[0]] + x[f[1]] + x[f[2]]);
+    area += 3.0 * a;
+  }
+  return c / area;
+}
+
 double max_abs(const Eigen::VectorXd& v) {
   return v.size() ? v.cwiseAbs().maxCoeff() : 0.0;
 }
@@ -187,14 +301,12 @@ double max_abs(const Eigen::VectorXd& v) {
 }  // namespace
 
 WallLoads FluidWallCoupling::step_loads(double dt, const WallLoads& loads_in,
-                                        const InletNode& inlet) const {
-  if (inlet.node >= 0)
-    for (int k = 0; k < 3; ++k)
-      if (wall_.dof_map()[3 * inlet.node + k] >= 0)
-        throw std::invalid_argument("the inlet node must be held fixed by the wall");
+                                        const Inflow& inflow) const {
+  if (!inflow.faces.empty()) require_held_inner_nodes(wall_, inflow.faces, "inflow");
   if (loads_in.inside.p0 != 0.0 || loads_in.inside.rho != 0.0)
     throw std::invalid_argument("the urine's traction replaces loads.inside: set it to zero");
   WallLoads loads = loads_in;
+  loads.inside = hydrostatic_part();
   // Backward Euler for the wall too: M (v − v_n)/Δt = c M (x − x̂), c = 1/Δt²,
   // x̂ = x_n + Δt v_n, so that the wall velocity is the urine velocity at the wall.
   const std::size_t n_wall = wall_.wall().node_count();
@@ -214,6 +326,12 @@ Eigen::VectorXd FluidWallCoupling::newton_increment(double dt, const WallLoads& 
   frame.positions = x_;
   frame.mesh_velocity.resize(x_.size());
   for (std::size_t i = 0; i < x_.size(); ++i) frame.mesh_velocity[i] = (x_[i] - x_old_[i]) / dt;
+  // At the wall the urine moves with the mesh: c = u − w_mesh stays zero there whatever
+  // the wall does, and the tangent must say so (without it Newton diverged next to the
+  // inflow jet, where ρ |∇u| / Δt exceeds the wall's stiffness).
+  frame.mesh_follows.assign(x_.size(), false);
+  for (std::size_t i = 0; i < wall_.wall().node_count(); ++i)
+    frame.mesh_follows[i] = u.is_wall_velocity[kDofsPerNode * i];
   WallAssembly wall_assembly;
   Eigen::VectorXd fluid_residual;
   SparseMatrix fluid_jacobian;
@@ -222,13 +340,49 @@ Eigen::VectorXd FluidWallCoupling::newton_increment(double dt, const WallLoads& 
   Eigen::VectorXd residual = rows * fluid_residual;
   residual.head(u.wall_free) += wall_assembly.residual;
   add_swept_volume(wall_.wall(), x_old_, x_, dt, u.index, residual);
-  const SparseMatrix jacobian = SparseMatrix(rows * fluid_jacobian * columns) +
-                                wall_block(wall_, x_, state_, wall_assembly.K, u.count);
-  u.lu.compute(jacobian);
-  if (u.lu.info() != Eigen::Success)
-    throw std::runtime_error("UMFPACK could not factorize the coupled Jacobian");
-  const Eigen::VectorXd dz = -u.lu.solve(residual);
-  if (!dz.allFinite()) throw std::runtime_error("non-finite Newton increment");
+  SparseMatrix jacobian = SparseMatrix(rows * fluid_jacobian * columns) +
+                          wall_block(wall_, x_, state_, wall_assembly.K, u.count);
+  return regularized_solve(jacobian, residual);
+}
+
+// Like the level-1 NewtonSolver: a step that would move a wall node by more than
+// max_move_per_edge mean edges (a slack wall's folds have almost no stiffness) is
+// recomputed on an elastic foundation η A at the wall dofs, η raised tenfold until the
+// step is short enough; η decays tenfold per iteration, so the converged state is the
+// unregularized one.
+Eigen::VectorXd FluidWallCoupling::regularized_solve(SparseMatrix& jacobian,
+                                                     const Eigen::VectorXd& residual) {
+  Unknowns& u = *unknowns_;
+  const double max_move = options_.max_move_per_edge * mean_edge_;
+  double stiffness_scale = 0.0, area_sum = 0.0;
+  for (int d = 0; d < u.wall_free; ++d) {
+    stiffness_scale += std::abs(jacobian.coeff(d, d));
+    area_sum += foundation_area_[d];
+  }
+  stiffness_scale /= std::max(area_sum, 1e-300);
+  double eta = eta_, eta_in_matrix = 0.0;
+  Eigen::VectorXd dz;
+  for (int attempt = 0;; ++attempt) {
+    if (eta != eta_in_matrix) {
+      for (int d = 0; d < u.wall_free; ++d)
+        jacobian.coeffRef(d, d) += (eta - eta_in_matrix) * foundation_area_[d];
+      eta_in_matrix = eta;
+    }
+    if (!u.analyzed) {
+      u.lu.analyzePattern(jacobian);
+      u.analyzed = true;
+    }
+    u.lu.factorize(jacobian);
+    if (u.lu.info() != Eigen::Success)
+      throw std::runtime_error("UMFPACK could not factorize the coupled Jacobian");
+    dz = -u.lu.solve(residual);
+    if (!dz.allFinite()) throw std::runtime_error("non-finite Newton increment");
+    const double move = max_abs(dz.head(u.wall_free));
+    if (max_move <= 0.0 || move <= max_move || attempt == 12) break;
+    eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;
+  }
+  if (eta > 0.0) ++regularized_iterations_;
+  eta_ = eta > 1e-9 * stiffness_scale ? 0.1 * eta : 0.0;
   return dz;
 }
 
@@ -243,23 +397,34 @@ double FluidWallCoupling::apply_urine_increment(const Eigen::VectorXd& dz) {
   return dp;
 }
 
-CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
-                                       const InletNode& inlet) {
-  const WallLoads loads = step_loads(dt, loads_in, inlet);
+CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in, const Inflow& inflow) {
+  const WallLoads loads = step_loads(dt, loads_in, inflow);
   const std::size_t n_wall = wall_.wall().node_count();
   SparseMatrix columns, rows;
   coupling_maps(unknowns_->index, unknowns_->is_wall_velocity, unknowns_->count, dt, columns, rows);
+  // The interior nodes move to the harmonic extension of the wall predicted from its
+  // last velocity and stay there through the Newton iteration (ALE allows any interior
+  // motion; the wall nodes move with the wall). Re-extending the iterate instead lagged
+  // the interior geometry one iteration behind, which the Jacobian cannot see, and made
+  // Newton diverge on a patient bladder.
   std::vector<Eigen::Vector3d> x_wall(x_old_.begin(), x_old_.begin() + n_wall);
+  for (std::size_t i = 0; i < n_wall; ++i) x_wall[i] += dt * wall_velocity_[i];
+  for (std::size_t i = 0; i < n_wall; ++i)
+    for (int k = 0; k < 3; ++k)
+      if (wall_.dof_map()[3 * i + k] < 0) x_wall[i][k] = x_old_[i][k];
+  move_mesh(x_wall);
   Eigen::AlignedBox3d box;
   for (const auto& p : x_wall) box.extend(p);
   const double size = box.diagonal().norm();
   CouplingReport report;
+  eta_ = 0.0;
+  regularized_iterations_ = 0;
   try {
     for (int iteration = 1; iteration <= options_.max_iterations && !report.converged;
          ++iteration) {
       report.iterations = iteration;
-      set_wall_velocities(x_wall, dt, inlet);
-      move_mesh(x_wall);
+      set_wall_velocities(x_wall, dt, inflow);
+      move_wall_nodes(x_wall);
       const Eigen::VectorXd dz = newton_increment(dt, loads, x_wall, columns, rows);
       const int wall_free = unknowns_->wall_free;
       wall_.apply_increment(dz.head(wall_free), x_wall);
@@ -268,6 +433,8 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
           1.0, max_abs(state_(Eigen::seqN(3, state_.size() / kDofsPerNode, kDofsPerNode))));
       report.converged = max_abs(dz.head(wall_free)) <= options_.position_tolerance * size &&
                          dp <= options_.pressure_tolerance * p_scale;
+      vesica::log()->debug("coupled iteration {}: max |dx| {:.3e} m, max |dp| {:.3e} Pa", iteration,
+                           max_abs(dz.head(wall_free)), dp);
     }
     if (!report.converged)
       report.failure =
@@ -275,20 +442,21 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in,
   } catch (const std::exception& e) {
     report.failure = e.what();
   }
+  report.regularized_iterations = regularized_iterations_;
   if (!report.converged) {
     // Back to the committed step, so that the caller may retry with a smaller Δt.
     x_ = x_old_;
     state_ = state_old_;
     return report;
   }
-  commit(dt, loads, x_wall, inlet);
+  commit(dt, loads, x_wall, inflow);
   return report;
 }
 
 void FluidWallCoupling::commit(double dt, const WallLoads& loads,
-                               const std::vector<Eigen::Vector3d>& x_wall, const InletNode& inlet) {
-  set_wall_velocities(x_wall, dt, inlet);
-  move_mesh(x_wall);
+                               const std::vector<Eigen::Vector3d>& x_wall, const Inflow& inflow) {
+  set_wall_velocities(x_wall, dt, inflow);
+  move_wall_nodes(x_wall);
   // The last increment was below tolerance: evaluate once more at the final positions so
   // that the committed wall history belongs to them.
   WallAssembly wall_assembly;
@@ -316,6 +484,86 @@ double FluidWallCoupling::fluid_kinetic_energy() const {
       energy += 0.125 * fluid_.density * volume * state_.segment<3>(kDofsPerNode * a).squaredNorm();
   }
   return energy;
+}
+
+Inflow inflow_at_node(const WallModel& wall, int node, double flow_rate) {
+  Inflow inflow;
+  inflow.flow_rate = flow_rate;
+  for (const auto& t : wall.triangles)
+    if (t[0] == node || t[1] == node || t[2] == node) inflow.faces.push_back(t);
+  return inflow;
+}
+
+HydrostaticPressure FluidWallCoupling::hydrostatic_part() const {
+  HydrostaticPressure p;
+  p.rho = fluid_.density;
+  p.gravity = fluid_.gravity;
+  p.x_ref = x_hydrostatic_;
+  return p;
+}
+
+Eigen::VectorXd FluidWallCoupling::full_state() const {
+  Eigen::VectorXd full = state_;
+  const HydrostaticPressure h = hydrostatic_part();
+  for (std::size_t i = 0; i < x_.size(); ++i) full[kDofsPerNode * i + 3] += h.at(x_[i]);
+  if (outlet_open_) full[unknowns_->problem.node_dof_count()] = outlet_pressure();
+  return full;
+}
+
+void FluidWallCoupling::set_wall_positions(const std::vector<Eigen::Vector3d>& x_wall) {
+  if (x_wall.size() != wall_.wall().node_count())
+    throw std::invalid_argument("set_wall_positions: one position per wall node");
+  move_mesh(x_wall);
+  x_old_ = x_;
+  for (auto& v : wall_velocity_) v.setZero();
+}
+
+void FluidWallCoupling::set_hydrostatic_state(double p_ref, const Eigen::Vector3d& x_ref) {
+  state_.setZero();
+  // p = p_ref + ρ g·(x − x_ref) = p̃ + ρ g·(x − x_h): p̃ is uniform.
+  const double p_tilde = p_ref - hydrostatic_part().at(x_ref);
+  for (std::size_t i = 0; i < x_.size(); ++i) state_[kDofsPerNode * i + 3] = p_tilde;
+  if (outlet_open_)
+    state_[unknowns_->problem.node_dof_count()] = patch_mean_pressure(outlet_.faces, x_, state_);
+  state_old_ = state_;
+}
+
+void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
+  require_held_inner_nodes(wall_, outlet.faces, "outlet");
+  outlet_ = outlet;
+  outlet_open_ = true;
+  // The law is in the full pressure at the patch centroid; the unknown is p̃ there.
+  FluidBoundary boundary;
+  boundary.outlets.push_back(outlet);
+  boundary.outlets[0].opening_pressure -= hydrostatic_part().at(patch_centroid(outlet.faces, x_));
+  unknowns_ = std::make_unique<Unknowns>(mesh_, boundary, fluid_);
+  build_unknowns();
+  const int last = unknowns_->problem.node_dof_count();
+  state_.conservativeResize(last + 1);
+  state_old_.conservativeResize(last + 1);
+  // Start p_out from the urine's pressure at the outlet centroid (the hydrostatic part
+  // over the patch is in the law, FluidMesh.h).
+  state_[last] = state_old_[last] = patch_mean_pressure(outlet.faces, x_, state_);
+}
+
+double FluidWallCoupling::outflow() const {
+  if (!outlet_open_) return 0.0;
+  double q = 0.0;
+  for (const auto& f : outlet_.faces) {
+    const Eigen::Vector3d m = corner_area_normal(f, x_);
+    for (int v : f) q += state_.segment<3>(kDofsPerNode * v).dot(m);
+  }
+  return q;
+}
+
+double FluidWallCoupling::outlet_pressure() const {
+  if (!outlet_open_) return 0.0;
+  return state_[unknowns_->problem.node_dof_count()] +
+         hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+}
+
+FluidMesh FluidWallCoupling::current_mesh() const {
+  return {x_, mesh_.tets};
 }
 
 }  // namespace vesica::simulate::fluid

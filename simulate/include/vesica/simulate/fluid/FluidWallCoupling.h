@@ -13,6 +13,7 @@
 // (∂R/∂(u, p), with ∂u_wall/∂x = I/Δt). Its dependence on the geometry is approximated by
 // the follower-pressure stiffness of the wall triangles at their mean nodal pressure; the
 // motion of the interior nodes is lagged (quasi-Newton: more iterations, same solution).
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,28 +22,39 @@
 #include <Eigen/Sparse>
 
 #include "vesica/simulate/MembraneProblem.h"
+#include "vesica/simulate/PressureLoad.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
 #include "vesica/simulate/fluid/FluidModel.h"
+#include "vesica/simulate/fluid/MeshMotion.h"
 
 namespace vesica::simulate::fluid {
 
-// A ureter inlet reduced to one wall node held fixed (all three wall dofs): the urine
-// enters there along the inward normal at the prescribed rate (m³/s), scaled on the
-// current geometry so that the discrete P1 flux through its faces is exactly the rate.
-struct InletNode {
-  int node = -1;
+// Inflow at a prescribed rate (m³/s) through a patch of wall triangles whose nodes the
+// wall holds fixed (a ureter orifice, or the urethral catheter of a cystometry): a plug
+// along the inward normals at the patch's inner nodes (those in no triangle outside the
+// patch), zero on its rim, scaled on the current geometry so that the discrete P1 flux is
+// exactly the rate.
+struct Inflow {
+  std::vector<std::array<int, 3>> faces;
   double flow_rate = 0.0;
 };
+
+// The fan of wall triangles around one node: an inlet reduced to a single node.
+Inflow inflow_at_node(const WallModel& wall, int node, double flow_rate);
 
 struct CouplingOptions {
   int max_iterations = 40;
   double position_tolerance = 1e-9;  // max |Δx| relative to the wall's size
   double pressure_tolerance = 1e-7;  // max |Δp| relative to max(|p|, 1 Pa)
+  // Longest Newton step of a wall node, in mean reference edges, before the step is
+  // recomputed on an elastic foundation (0 = never).
+  double max_move_per_edge = 0.5;
 };
 
 struct CouplingReport {
   bool converged = false;
   int iterations = 0;
+  int regularized_iterations = 0;  // iterations whose step needed the foundation
   std::string failure;
 };
 
@@ -57,11 +69,36 @@ class FluidWallCoupling {
 
   // One backward-Euler step of dt (s). loads: the wall's loads without the urine
   // (loads.inside must be zero: the urine's traction replaces it); its inertia is set
-  // here. On convergence the step is committed (wall history, positions, velocities).
-  CouplingReport step(double dt, const WallLoads& loads, const InletNode& inlet);
+  // here. On convergence the step is committed (wall history, positions, velocities);
+  // otherwise the state stays at the last committed step. Throws std::invalid_argument
+  // when an inflow node is not held fixed by the wall.
+  CouplingReport step(double dt, const WallLoads& loads, const Inflow& inflow);
+
+  // Urine at rest with the hydrostatic pressure p = p_ref + ρ g·(x − x_ref) (Pa, m): the
+  // equilibrium start when the wall's outside load balances it.
+  void set_hydrostatic_state(double p_ref, const Eigen::Vector3d& x_ref);
+  // Starts from a deformed wall at rest (e.g. level 1's equilibrium at the start volume):
+  // wall node positions (m), the interior following by the mesh motion. Call before
+  // set_hydrostatic_state.
+  void set_wall_positions(const std::vector<Eigen::Vector3d>& x_wall);
+  // Opens the urethra: the outlet faces (wall triangles held fixed) carry the traction of
+  // the urethra law (FluidMesh.h) and their inner nodes get free urine velocities. The
+  // outlet pressure starts at the hydrostatic value at the patch centroid.
+  void open_outlet(const UrethraOutlet& outlet);
+  bool outlet_open() const { return outlet_open_; }
+  // Outflow through the open outlet (m³/s, positive out), 0 when closed.
+  double outflow() const;
+  // Pressure of the open outlet's law (Pa) at its centroid.
+  double outlet_pressure() const;
 
   const std::vector<Eigen::Vector3d>& positions() const { return x_; }  // all tet nodes, m
-  const Eigen::VectorXd& state() const { return state_; }  // as in FluidMesh.h, m/s and Pa
+  // The unknowns as in FluidMesh.h (m/s and Pa; with the outlet open, p_out last), with
+  // the modified pressure p̃ = p − ρ g·(x − x_h) (no hydrostatic part; = p without gravity).
+  const Eigen::VectorXd& state() const { return state_; }
+  // The same with the full pressure p.
+  Eigen::VectorXd full_state() const;
+  // The tetrahedra at the current positions.
+  FluidMesh current_mesh() const;
   const std::vector<Eigen::Vector3d>& wall_velocity() const { return wall_velocity_; }
   // Volume of the tetrahedra at the current positions (m³).
   double fluid_volume() const;
@@ -72,24 +109,37 @@ class FluidWallCoupling {
   struct Unknowns;
   void build_unknowns();
   void set_wall_velocities(const std::vector<Eigen::Vector3d>& x_wall, double dt,
-                           const InletNode& inlet);
-  void move_mesh(const std::vector<Eigen::Vector3d>& x_wall);
-  WallLoads step_loads(double dt, const WallLoads& loads_in, const InletNode& inlet) const;
+                           const Inflow& inflow);
+  void move_mesh(const std::vector<Eigen::Vector3d>& x_wall);        // interior by mesh motion
+  void move_wall_nodes(const std::vector<Eigen::Vector3d>& x_wall);  // interior stays
+  WallLoads step_loads(double dt, const WallLoads& loads_in, const Inflow& inflow) const;
   // Assembles the coupled residual and Jacobian at the current state and solves; throws
   // std::runtime_error when an element, the mesh or the factorization fails.
   Eigen::VectorXd newton_increment(double dt, const WallLoads& loads,
                                    const std::vector<Eigen::Vector3d>& x_wall,
                                    const Eigen::SparseMatrix<double>& columns,
                                    const Eigen::SparseMatrix<double>& rows);
+  Eigen::VectorXd regularized_solve(Eigen::SparseMatrix<double>& jacobian,
+                                    const Eigen::VectorXd& residual);
   double apply_urine_increment(const Eigen::VectorXd& dz);  // returns max |Δp|
   void commit(double dt, const WallLoads& loads, const std::vector<Eigen::Vector3d>& x_wall,
-              const InletNode& inlet);
+              const Inflow& inflow);
 
   MembraneProblem& wall_;
   const FluidMesh& mesh_;
   FluidProperties fluid_;
   CouplingOptions options_;
   std::unique_ptr<Unknowns> unknowns_;
+  HydrostaticPressure hydrostatic_part() const;  // ρ g·(x − x_h), the wall load it makes
+
+  std::unique_ptr<HarmonicMeshMotion> motion_;
+  Eigen::Vector3d x_hydrostatic_;        // x_h: reference height of the hydrostatic part
+  std::vector<double> foundation_area_;  // per free wall dof: its node's area (m²)
+  double mean_edge_ = 0.0;               // of the reference wall (m)
+  double eta_ = 0.0;                     // foundation stiffness carried to the next iteration
+  int regularized_iterations_ = 0;
+  UrethraOutlet outlet_;
+  bool outlet_open_ = false;
   std::vector<Eigen::Vector3d> x_, x_old_;  // tet node positions now and at t_n
   std::vector<Eigen::Vector3d> wall_velocity_;
   Eigen::VectorXd state_, state_old_;
