@@ -1,5 +1,6 @@
 // vesica-simulate MESH -o OUTDIR: simulated cystometry (filling and voiding) of the
-// bladder wall with the level-1 wall-urine model. See docs/simulate.md.
+// bladder wall with the level-1 wall-urine model, or with --level 2 the Navier–Stokes
+// urine on the tetrahedra. See docs/simulate.md and docs/navier-stokes.md.
 #include <filesystem>
 #include <sstream>
 
@@ -13,6 +14,8 @@
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/MeshReader.h"
+#include "vesica/simulate/fluid/FluidCystometry.h"
 
 namespace fs = std::filesystem;
 using namespace vesica;
@@ -48,6 +51,8 @@ struct Cli {
   bool no_void = false, no_gravity = false, filling_only = false, no_series = false;
   bool dynamic = false;
   double bossak_alpha = -0.1;
+  int level = 1;
+  fluid::FluidRunOptions fluid;
   WallOptions wall;
   CystometryProtocol protocol;
 };
@@ -152,7 +157,18 @@ int main(int argc, char** argv) {
   app.add_flag("--dynamic", c.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
   app.add_option("--bossak-alpha", c.bossak_alpha, "Bossak alpha in [-1/3, 0]")
       ->capture_default_str();
-  app.add_flag("--no-series", c.no_series, "do not write series.pvd/series/*.vtu");
+  app.add_option("--level", c.level,
+                 "1: urine as a hydrostatic volume (seconds); 2: Navier–Stokes urine on the "
+                 "tetrahedra of vesica-mesh --fluid (velocity, wall shear; minutes)")
+      ->check(CLI::IsMember({1, 2}))
+      ->capture_default_str();
+  app.add_option("--fluid-dt-s", c.fluid.fill_dt_s, "level 2: time step while filling")
+      ->capture_default_str();
+  app.add_option("--void-dt-s", c.fluid.void_dt_s, "level 2: time step while voiding")
+      ->capture_default_str();
+  app.add_option("--urine-viscosity-pa-s", c.fluid.urine_viscosity, "level 2: urine viscosity")
+      ->capture_default_str();
+  app.add_flag("--no-series", c.no_series, "do not write the .pvd/.vtu series");
   add_common_options(app, common);
 
   return run_stage_main(app, argc, argv, common, [&]() {
@@ -203,14 +219,32 @@ int main(int argc, char** argv) {
     params["detrusor_kpa"] = p.detrusor_kpa;
     params["straining_kpa"] = p.straining_kpa;
     params["wall_drag_pa_s_per_m"] = p.wall_drag_pa_s_per_m;
+    params["level"] = c.level;
     CystometryResult result;
-    {
+    if (c.level == 2) {
+      if (c.dynamic || c.wall.reference != ReferenceState::Scale)
+        usage_error("--level 2 supports --reference scale without --dynamic");
+      fluid::FluidMesh urine;
+      {
+        PhaseTimer timer(record, "read");
+        urine = fluid::urine_in_reference(read_urine(c.mesh), wall);
+      }
+      params["fluid_dt_s"] = c.fluid.fill_dt_s;
+      params["void_dt_s"] = c.fluid.void_dt_s;
+      params["urine_viscosity_pa_s"] = c.fluid.urine_viscosity;
+      c.fluid.output_dir = c.output;
+      c.fluid.write_series = options.write_series;
+      c.fluid.on_progress = options.on_progress;
+      PhaseTimer timer(record, "simulate");
+      result = fluid::run_fluid_cystometry(wall, urine, spec, p, c.fluid);
+    } else {
       PhaseTimer timer(record, "simulate");
       result = run_cystometry(wall, spec, p, options);
     }
     const fs::path out(c.output);
     record.add_output(out / "history.csv");
     if (options.write_series) record.add_output(out / "series.pvd");
+    if (options.write_series && c.level == 2) record.add_output(out / "fluid.pvd");
     record.summary() = result.summary;
     record.write(out / "summary.json",
                  default_manifest_path(common, (out / "summary.json").string()));

@@ -51,14 +51,66 @@ vtkSmartPointer<vtkDataSet> read_dataset(const std::filesystem::path& path) {
        "give the .vtu or .msh from vesica-mesh, or a surface .vtp/.stl");
 }
 
-}  // namespace
+// The compact node numbering of the simulation: points in the order the triangles first
+// use them (the wall), so that read_wall and read_urine number the wall alike.
+std::map<vtkIdType, int> wall_numbering(vtkDataSet* data) {
+  std::map<vtkIdType, int> node_of;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+    if (data->GetCellType(c) != VTK_TRIANGLE) continue;
+    data->GetCellPoints(c, ids);
+    for (int k = 0; k < 3; ++k)
+      node_of.try_emplace(ids->GetId(k), static_cast<int>(node_of.size()));
+  }
+  return node_of;
+}
 
-WallModel read_wall(const std::filesystem::path& given, double default_thickness_m) {
+Eigen::Vector3d point_m(vtkDataSet* data, vtkIdType id) {
+  double p[3];
+  data->GetPoint(id, p);
+  return {units::m_from_mm(p[0]), units::m_from_mm(p[1]), units::m_from_mm(p[2])};
+}
+
+std::filesystem::path vtu_of(const std::filesystem::path& given) {
   std::filesystem::path path = given;
   if (path.extension() == ".msh") path.replace_extension(".vtu");
   if (!std::filesystem::exists(path))
     fail(path.string(), "does not exist",
          given.extension() == ".msh" ? "vesica-mesh writes the .vtu beside the .msh" : "");
+  return path;
+}
+
+}  // namespace
+
+fluid::FluidMesh read_urine(const std::filesystem::path& given) {
+  const std::filesystem::path path = vtu_of(given);
+  if (path.extension() != ".vtu")
+    fail(path.string(), "holds no tetrahedra", "level 2 needs the .vtu of vesica-mesh --fluid");
+  const vtkSmartPointer<vtkDataSet> data = read_dataset(path);
+  if (!data || data->GetNumberOfPoints() == 0) fail(path.string(), "holds no points");
+  std::map<vtkIdType, int> node_of = wall_numbering(data);
+  fluid::FluidMesh mesh;
+  mesh.nodes.resize(node_of.size());
+  for (const auto& [id, node] : node_of) mesh.nodes[node] = point_m(data, id);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
+    if (data->GetCellType(c) != VTK_TETRA) continue;
+    data->GetCellPoints(c, ids);
+    std::array<int, 4> t;
+    for (int k = 0; k < 4; ++k) {
+      auto [it, added] = node_of.try_emplace(ids->GetId(k), static_cast<int>(node_of.size()));
+      if (added) mesh.nodes.push_back(point_m(data, it->first));
+      t[k] = it->second;
+    }
+    mesh.tets.push_back(t);
+  }
+  if (mesh.tets.empty())
+    fail(path.string(), "holds no tetrahedra", "mesh it with vesica-mesh --fluid for level 2");
+  return mesh;
+}
+
+WallModel read_wall(const std::filesystem::path& given, double default_thickness_m) {
+  const std::filesystem::path path = vtu_of(given);
   const vtkSmartPointer<vtkDataSet> data = read_dataset(path);
   if (!data || data->GetNumberOfPoints() == 0) fail(path.string(), "holds no points");
   vtkCellData* cd = data->GetCellData();
@@ -68,24 +120,15 @@ WallModel read_wall(const std::filesystem::path& given, double default_thickness
   vtkDataArray* fiber2 = cd->GetArray("fiber2");
 
   WallModel wall;
-  std::map<vtkIdType, int> node_of;  // compact numbering of the points triangles use
+  const std::map<vtkIdType, int> node_of = wall_numbering(data);
+  wall.nodes.resize(node_of.size());
+  for (const auto& [id, node] : node_of) wall.nodes[node] = point_m(data, id);
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c) {
     if (data->GetCellType(c) != VTK_TRIANGLE) continue;  // tets (urine), lines, vertices
     data->GetCellPoints(c, ids);
     std::array<int, 3> t;
-    for (int k = 0; k < 3; ++k) {
-      const vtkIdType id = ids->GetId(k);
-      auto it = node_of.find(id);
-      if (it == node_of.end()) {
-        double p[3];
-        data->GetPoint(id, p);
-        wall.nodes.emplace_back(units::m_from_mm(p[0]), units::m_from_mm(p[1]),
-                                units::m_from_mm(p[2]));
-        it = node_of.emplace(id, static_cast<int>(wall.nodes.size()) - 1).first;
-      }
-      t[k] = it->second;
-    }
+    for (int k = 0; k < 3; ++k) t[k] = node_of.at(ids->GetId(k));
     wall.triangles.push_back(t);
     const int r = region ? static_cast<int>(region->GetTuple1(c)) : static_cast<int>(Region::Wall);
     if (r < 1 || r > 5)

@@ -14,7 +14,8 @@ constexpr int kVtkTetra = 10;
 
 }  // namespace
 
-std::string fluid_vtu_text(const FluidMesh& mesh, const Eigen::VectorXd& state) {
+std::string fluid_vtu_text(const FluidMesh& mesh, const Eigen::VectorXd& state,
+                           const std::vector<Eigen::Vector3d>* wall_shear_pa) {
   std::ostringstream s;
   s.precision(9);
   const std::size_t nn = mesh.nodes.size();
@@ -26,15 +27,19 @@ std::string fluid_vtu_text(const FluidMesh& mesh, const Eigen::VectorXd& state) 
   vtk_data_array(s, "Float64", "pressure_cmh2o", 1, nn, [&](std::size_t i, int) {
     return units::cmh2o_from_pa(state[kDofsPerNode * i + 3]);
   });
+  if (wall_shear_pa)
+    vtk_data_array(s, "Float64", "wall_shear_pa", 3, nn,
+                   [&](std::size_t i, int c) { return (*wall_shear_pa)[i][c]; });
   s << "</PointData>\n";
   vtu_end(s);
   return s.str();
 }
 
-void FluidVtuSeries::add_step(double time_s, const FluidMesh& mesh, const Eigen::VectorXd& state) {
+void FluidVtuSeries::add_step(double time_s, const FluidMesh& mesh, const Eigen::VectorXd& state,
+                              const std::vector<Eigen::Vector3d>* wall_shear_pa) {
   char name[32];
   std::snprintf(name, sizeof name, "step_%04zu.vtu", steps_.size());
-  write_text_atomically(folder_ / "fluid" / name, fluid_vtu_text(mesh, state));
+  write_text_atomically(folder_ / "fluid" / name, fluid_vtu_text(mesh, state, wall_shear_pa));
   steps_.emplace_back(time_s, std::string("fluid/") + name);
 }
 

@@ -8,11 +8,17 @@
 #include <filesystem>
 
 #include "vesica/simulate/WallModel.h"
+#include "vesica/simulate/fluid/FluidMesh.h"
 
 namespace vesica::simulate {
 
 // default_thickness_m applies where the file has no "thickness_mm". Throws vesica::Error
 // naming the file for a missing/unreadable file, no triangles, or an open surface.
 WallModel read_wall(const std::filesystem::path& path, double default_thickness_m);
+
+// The urine tetrahedra of a vesica-mesh --fluid .vtu (or its .msh) in m, numbered so that
+// nodes 0..N-1 are read_wall's wall nodes (same order, same positions) and the other tet
+// points follow. Throws vesica::Error naming the file when it holds no tetrahedra.
+fluid::FluidMesh read_urine(const std::filesystem::path& path);
 
 }  // namespace vesica::simulate

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Issue 10 benchmark: level-2 (Navier–Stokes urine, monolithic with the wall) cystometry
+# of the real CT bladder of ../shared: the reference label -> a ≈ 2,300-triangle wall
+# with its outlet patch at the neck (vesica-surface) -> ≈ 21,000 urine tetrahedra
+# (vesica-mesh --fluid --tet-size-mm 4.5) -> vesica-simulate --level 2: 50 -> 100 ml at
+# 50 ml/min (60 s of simulated time), then voiding by straining. Target: the filling in
+# < 30 minutes on 2 cores. Prints one JSON object: mesh sizes, the seconds of the settle
+# (level 1, 45 -> 50 ml), filling and voiding phases, steps, Newton iterations, time per
+# step, remeshes, and the read-outs. Usage: bench_simulate_level2.sh BUILD_DIR [OUTDIR]
+set -euo pipefail
+build=$(cd "${1:-build}" && pwd)
+here=$(cd "$(dirname "$0")/.." && pwd)
+label="${VESICA_SHARED_DIR:-$here/../shared}/data/ct/abdomen-3mm/bladder-reference.nii.gz"
+for tool in vesica-surface vesica-mesh vesica-simulate; do
+  [ -x "$build/bin/$tool" ] || { echo "{\"error\": \"$tool not built\"}"; exit 0; }
+done
+[ -f "$label" ] || { echo "{\"error\": \"missing $label\"}"; exit 0; }
+work=${2:-$(mktemp -d)}
+mkdir -p "$work"
+
+"$build/bin/vesica-surface" "$label" -o "$work/bladder.vtp" --target-triangles 2300 \
+  --outlet auto --outlet-radius-mm 12 --json > "$work/surface.json"
+"$build/bin/vesica-mesh" "$work/bladder.vtp" -o "$work/bladder.msh" --fluid --tet-size-mm 4.5 \
+  --json > "$work/mesh.json"
+t0=$(date +%s%N)
+"$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 --mu-kpa 3 \
+  --capacity-ml 100 --straining-kpa 4 --residual-ml 45 --json > "$work/simulate.json" || true
+t1=$(date +%s%N)
+
+python3 - "$work" "$t0" "$t1" <<'PY'
+import json, sys
+work, t0, t1 = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+s = json.load(open(f"{work}/level2/summary.json"))
+phases = s.get("phase_compute_s", {})
+out = {
+    "level2_real_bladder": {
+        "triangles": s.get("triangles"), "tetrahedra": s.get("tetrahedra"),
+        "urine_nodes": s.get("urine_nodes"), "completed": s.get("completed"),
+        "failure": s.get("failure"),
+        "settle_level1_s": phases.get("settle"), "filling_s": phases.get("filling"),
+        "voiding_s": phases.get("voiding"), "total_s": (t1 - t0) / 1e9,
+        "filling_target_s": 1800.0,
+        "newton": s.get("newton"), "remeshes": s.get("remeshes"),
+        "min_tet_radius_ratio": s.get("min_tet_radius_ratio"),
+        "pdet_at_capacity_cmh2o": s.get("pdet_at_capacity_cmh2o"),
+        "qmax_ml_s": s.get("qmax_ml_s"), "voided_ml": s.get("voided_ml"),
+        "pvr_ml": s.get("pvr_ml"), "max_velocity_mm_s": s.get("max_velocity_mm_s"),
+        "max_wall_shear_pa": s.get("max_wall_shear_pa"),
+        "mass_balance_error_max_rel": s.get("mass_balance_error_max_rel"),
+        "outputs": f"{work}/level2",
+    }
+}
+print(json.dumps(out, indent=2))
+PY
