@@ -54,6 +54,7 @@ class CavityRun {
 
  private:
   bool attempt(double dt, double q_in, bool outlet, double V_target_no_flow, int& iterations);
+  void predict(double dt);
   void set_time_loads(double t);
   double outlet_flow(double p0, double& dQ_dp0) const;
 
@@ -63,6 +64,10 @@ class CavityRun {
   NewtonSolver solver_;
   WallLoads loads_;
   std::vector<Eigen::Vector3d> x_;
+  // The state before the last timed step and its length: the predictor of the next one.
+  std::vector<Eigen::Vector3d> x_before_;
+  double p_before_ = 0.0, dt_before_ = 0.0;
+  bool smooth_ = false;  // the last step converged quickly, without cut-back
   double t_ = 0.0, t_void_ = -1.0;
   double volume_ = 0.0, V0_ = 0.0, V_reference_ = 0.0;
   double infused_ = 0.0, voided_ = 0.0, q_out_ = 0.0;

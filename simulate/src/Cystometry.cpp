@@ -24,6 +24,8 @@ namespace {
 
 // The largest stretch the protocol may ask of the reference wall (volume ratio λ³).
 constexpr double kMaxMeanStretch = 4.0;
+// Volume per voiding step once the wall is slack (see next_void_step).
+constexpr double kSlackVoidStepMl = 2.0;
 
 void validate(const CystometryProtocol& p, double reference_ml) {
   auto require = [](bool ok, const std::string& what) {
@@ -188,7 +190,7 @@ class CystometryDriver {
     const double stop = units::m3s_from_mls(protocol_.stop_flow_ml_s);
     const double V_floor = units::m3_from_ml(1.0);
     while (run_.time() - t0 < protocol_.max_void_s) {
-      const double V_before = run_.volume();
+      const double V_before = run_.volume(), t_before = run_.time();
       // The membrane has no contact: never let a step drain more than half of what is
       // left above 1 ml, so the wall cannot collapse through itself.
       if (run_.outflow() > 0.0) dt = std::min(dt, 0.5 * (V_before - V_floor) / run_.outflow());
@@ -198,12 +200,23 @@ class CystometryDriver {
       if (Q >= stop) flowing = true;
       if (flowing && Q < stop) break;
       if (run_.volume() < 2.0 * V_floor) break;
-      // Aim at about 2 ml per step while urine flows, larger steps while it does not.
-      const double dV = std::abs(V_before - run_.volume());
-      const double aim = units::m3_from_ml(2.0);
-      dt = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, 2.0 * dt) : 2.0 * dt;
-      dt = std::min(dt, options_.max_void_step_s);
+      // From the step actually taken: a cut-back shortened it.
+      dt = next_void_step(run_.time() - t_before, std::abs(V_before - run_.volume()));
     }
+  }
+
+  // The next voiding step from the one just taken (dt, draining dV): aim at a volume per
+  // step, growing at most 2x. A taut wall drains smoothly (2 Newton iterations a step with
+  // the predictor), so the aim is a quarter of the volume left above the stress-free
+  // reference, up to max_void_step_ml; near and below the reference the wall goes slack
+  // and wrinkles, every step is hard whatever its size, and 2 ml steps fail least.
+  double next_void_step(double dt, double dV) const {
+    const double slack_aim = units::m3_from_ml(kSlackVoidStepMl);
+    const double aim =
+        std::clamp((run_.volume() - run_.initial_reference_volume()) / 4.0, slack_aim,
+                   std::max(slack_aim, units::m3_from_ml(options_.max_void_step_ml)));
+    const double next = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, 2.0 * dt) : 2.0 * dt;
+    return std::min(next, options_.max_void_step_s);
   }
 
   void summarize(double seconds) {

@@ -87,7 +87,8 @@ struct RunOptions {
   bool write_series = true;          // series.pvd + series/*.vtu when output_dir is set
   double series_interval_s = 10.0;   // during filling; voiding frames every 1 s
   double max_fill_step_ml = 10.0;    // largest volume increment of a filling step
-  double max_void_step_s = 0.5;
+  double max_void_step_s = 0.5;      // longest voiding step (time resolution of the flow)
+  double max_void_step_ml = 10.0;    // largest volume voided by one step of a taut wall
   int threads = 2;
   // Bossak–Newmark dynamics of the wall (physics.md §3) instead of quasi-static steps;
   // α_B ∈ [-1/3, 0] (0: no numerical damping).
