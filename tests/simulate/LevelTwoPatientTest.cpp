@@ -34,7 +34,12 @@ using namespace vesica::test;
 
 namespace {
 
-const char* kProtocol = " --mu-kpa 3 --capacity-ml 60 --straining-kpa 4 --residual-ml 45 --json";
+// 45 ml stress-free, so that level 2 starts on a taut wall at 50 ml (level 1 settles it),
+// and 2 s of voiding (60 -> about 46 ml): below its stress-free volume the wall goes slack
+// and folds, which the membrane without a wrinkling model follows only in tiny steps
+// (docs/navier-stokes.md §3).
+const char* kProtocol =
+    " --mu-kpa 3 --capacity-ml 60 --straining-kpa 4 --residual-ml 45 --max-void-s 2 --json";
 
 nlohmann::json read_json(const fs::path& p) {
   return nlohmann::json::parse(std::ifstream(p));
@@ -106,7 +111,9 @@ TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
   EXPECT_GT(q2, 1.0);
   EXPECT_NEAR(q2, q1, 0.1 * q1);
   EXPECT_NEAR(s2["voided_ml"].get<double>() + s2["pvr_ml"].get<double>(), 60.0, 1e-3);
-  EXPECT_NEAR(s2["voided_ml"].get<double>(), s1["voided_ml"].get<double>(), 3.0);
+  const double voided1 = s1["voided_ml"].get<double>();
+  EXPECT_GT(voided1, 1.0);
+  EXPECT_NEAR(s2["voided_ml"].get<double>(), voided1, 0.1 * voided1);
 
   // The fields open in VTK's reader, on every node of every tetrahedron.
   const fs::path frame = last_fluid_frame(dir / "level2");

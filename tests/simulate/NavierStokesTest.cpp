@@ -239,6 +239,7 @@ struct PoiseuilleResult {
   double assembly_seconds = 0.0, solve_seconds = 0.0;
   std::size_t tets = 0;
   double seconds = 0.0;
+  double wall_shear = 0.0, wall_shear_exact = 0.0;  // Pa, mean over the middle third
 };
 
 // The boundary of tube_mesh(): side wall (|n_z| < 0.5), inlet z = 0, outlet z = L.
@@ -295,6 +296,24 @@ PoiseuilleResult solve_poiseuille(double delta_p_pa) {
   r.q_outlet = flow_rate(faces, tube.outlet, state);
   r.q_inlet = -flow_rate(faces, tube.inlet, state);
   r.q_exact = M_PI * std::pow(radius, 4) * delta_p_pa / (8.0 * urine.viscosity * length);
+  // Wall shear of developed Poiseuille flow: τ_w = Δp R / (2 L), along the axis. Side faces
+  // of the middle third, away from the ends' entrance effects; area-weighted mean.
+  std::vector<std::array<int, 3>> side;
+  for (const auto& f : faces.faces()) {
+    const double z = (mesh.nodes[f[0]].z() + mesh.nodes[f[1]].z() + mesh.nodes[f[2]].z()) / 3.0;
+    if (std::abs(faces.area_normal(f).normalized().z()) < 0.5 && z > length / 3.0 &&
+        z < 2.0 * length / 3.0)
+      side.push_back(f);
+  }
+  const auto shear = wall_shear_stress(faces, side, urine, state);
+  double area = 0.0;
+  for (std::size_t k = 0; k < side.size(); ++k) {
+    const double a = faces.area_normal(side[k]).norm();
+    r.wall_shear += a * shear[k].norm();
+    area += a;
+  }
+  r.wall_shear /= area;
+  r.wall_shear_exact = delta_p_pa * radius / (2.0 * length);
   r.newton_iterations = report.iterations;
   r.assembly_seconds = report.assembly_seconds;
   r.solve_seconds = report.solve_seconds;
@@ -316,6 +335,11 @@ TEST(NavierStokes, PoiseuilleFlowRate) {
         r.newton_iterations, r.assembly_seconds, r.solve_seconds, r.seconds);
     EXPECT_NEAR(r.q_outlet / r.q_exact, 1.0, 0.02);
     EXPECT_NEAR(r.q_inlet / r.q_exact, 1.0, 0.02);
+    // P1 velocity: the gradient in the wall layer is the secant of the parabola over one
+    // element, low by about h/(2R) = 5 % here; first order in h.
+    std::printf("[ poiseuille ] wall shear %.5f Pa, exact Δp R / 2L = %.5f Pa (%+.1f %%)\n",
+                r.wall_shear, r.wall_shear_exact, 100 * (r.wall_shear / r.wall_shear_exact - 1));
+    EXPECT_NEAR(r.wall_shear / r.wall_shear_exact, 1.0, 0.08);
   }
 }
 

@@ -100,7 +100,7 @@ class FluidCystometryDriver {
       wall_series_ = std::make_unique<VtuSeriesWriter>(options.output_dir);
       fluid_series_ = std::make_unique<FluidVtuSeries>(options.output_dir);
     }
-    V0_ = coupling_->fluid_volume();
+    V_reference_ = coupling_->fluid_volume();
   }
 
   CystometryResult run() {
@@ -295,7 +295,19 @@ class FluidCystometryDriver {
       const double Q = coupling_->outflow();
       // No contact in the membrane: never drain more than half of what is left above 1 ml.
       if (Q > 0.0) dt = std::min(dt, 0.5 * (volume() - V_floor) / Q);
-      advance(dt, 0.0);
+      try {
+        advance(dt, 0.0);
+      } catch (const StepFailed& e) {
+        // Below its stress-free volume the wall is slack and folds; without a wrinkling
+        // model the folds run into the urine mesh. The voiding so far stands.
+        if (volume() > V_reference_) throw;
+        result_.notes.push_back("level-2 voiding ended at " +
+                                std::to_string(units::ml_from_m3(volume())) +
+                                " ml, below the stress-free volume, where the slack wall "
+                                "folds into the urine mesh (" + e.what() + ")");
+        vesica::log()->warn("{}", result_.notes.back());
+        break;
+      }
       record();
       const double q_now = coupling_->outflow();
       if (q_now >= stop) flowing = true;
@@ -397,7 +409,7 @@ class FluidCystometryDriver {
     s["nodes"] = wall_.node_count();
     s["tetrahedra"] = urine_.tets.size();
     s["urine_nodes"] = urine_.nodes.size();
-    s["reference_volume_ml"] = units::ml_from_m3(V0_);
+    s["reference_volume_ml"] = units::ml_from_m3(V_reference_);
     summarize_history(result_.history, capacity_index_, s);
     s["max_wall_stress_kpa"] = units::kpa_from_pa(max_stress_);
     s["max_velocity_mm_s"] = units::mm_from_m(max_speed_);
@@ -434,7 +446,8 @@ class FluidCystometryDriver {
   std::unique_ptr<VtuSeriesWriter> wall_series_;
   std::unique_ptr<FluidVtuSeries> fluid_series_;
   CystometryResult result_;
-  double t_ = 0.0, t_void_ = -1.0, infused_ = 0.0, voided_ = 0.0, V0_ = 0.0, V_start_ = 0.0;
+  double t_ = 0.0, t_void_ = -1.0, infused_ = 0.0, voided_ = 0.0, V_start_ = 0.0;
+  double V_reference_ = 0.0;  // stress-free volume of the wall (m³)
   double mass_error_ = 0.0, max_stress_ = 0.0, max_speed_ = 0.0, max_shear_ = 0.0;
   double min_quality_ = 1.0, step_seconds_ = 0.0;
   double next_frame_ = 0.0, last_frame_ = -1.0;

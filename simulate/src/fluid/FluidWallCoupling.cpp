@@ -15,6 +15,7 @@
 #include "vesica/simulate/fluid/FluidProblem.h"
 #include "vesica/simulate/fluid/MeshMotion.h"
 #include "vesica/simulate/fluid/StabilizedTet.h"
+#include "vesica/simulate/fluid/TetQuality.h"
 
 namespace vesica::simulate::fluid {
 
@@ -443,6 +444,12 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in, con
     report.failure = e.what();
   }
   report.regularized_iterations = regularized_iterations_;
+  if (report.converged && min_radius_ratio(x_, mesh_.nodes, mesh_.tets) <= 0.0) {
+    // A converged state with an inverted urine tetrahedron (the wall folded into the
+    // urine) is not a solution: fail, so that the caller cuts the step back.
+    report.converged = false;
+    report.failure = "a urine tetrahedron inverted";
+  }
   if (!report.converged) {
     // Back to the committed step, so that the caller may retry with a smaller Δt.
     x_ = x_old_;
