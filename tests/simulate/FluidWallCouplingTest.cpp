@@ -5,7 +5,10 @@
 //      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (physics.md §6), within 3 %, and the tet
 //      volume against V0 + ∫Q dt within 0.5 %;
 //  (d) wall 920 kg/m³ against urine 1000 kg/m³ with 1 ms steps: a sudden inflow and its
-//      stop do not blow up (bounded velocity, kinetic energy decays after the stop).
+//      stop do not blow up (bounded velocity, kinetic energy decays after the stop);
+//  (e) remeshing mid-filling (docs/navier-stokes.md §1): the new tetrahedra hold the same
+//      volume, filling goes on along the analytic curve with exact volume bookkeeping, and
+//      the transfer of the urine state reproduces linear fields exactly.
 // SI units.
 #include <gtest/gtest.h>
 
@@ -18,6 +21,7 @@
 #include "vesica/simulate/MembraneProblem.h"
 #include "vesica/simulate/SphereMesh.h"
 #include "vesica/simulate/fluid/FluidWallCoupling.h"
+#include "vesica/simulate/fluid/TetQuality.h"
 
 using namespace vesica::simulate;
 using namespace vesica::simulate::fluid;
@@ -165,4 +169,90 @@ TEST(FluidWallCoupling, LightWallInDenseUrineStaysStable) {
   for (std::size_t s = 9; s < energy.size(); ++s) EXPECT_LE(energy[s], energy_at_stop) << s + 1;
   EXPECT_LT(energy.back(), 0.5 * energy_at_stop);
   EXPECT_NEAR(V, V0 + filled, 0.005 * (V0 + filled));
+}
+
+namespace {
+
+double quality(const FluidWallCoupling& c) {
+  return min_radius_ratio(c.positions(), c.mesh().nodes, c.mesh().tets);
+}
+
+}  // namespace
+
+TEST(FluidWallCoupling, RemeshingMidFillingKeepsVolumeAndTheBalloonCurve) {
+  CoupledBalloon b(10);
+  const double V0 = b.coupling->fluid_volume();
+  const double Q = 1e-6, dt = 2.0;
+  WallLoads loads;
+  double filled = 0.0;
+  for (int s = 1; s <= 6; ++s) {
+    if (s == 4) {
+      // The wall has grown by 6 ml: the default size (the wall's mean edge) is now longer.
+      const double V_before = b.coupling->fluid_volume(), q_before = quality(*b.coupling);
+      const std::size_t tets_before = b.coupling->mesh().tets.size();
+      const std::vector<Eigen::Vector3d> wall_before(
+          b.coupling->positions().begin(),
+          b.coupling->positions().begin() + static_cast<long>(b.wall.node_count()));
+      const int tets = b.coupling->remesh();
+      const double V_after = b.coupling->fluid_volume();
+      std::printf(
+          "[ coupling ] remesh: %zu -> %d tets, radius ratio %.3f -> %.3f, V %.9f -> "
+          "%.9f ml (%+.1e)\n",
+          tets_before, tets, q_before, quality(*b.coupling), V_before * 1e6, V_after * 1e6,
+          V_after / V_before - 1);
+      EXPECT_NEAR(V_after, V_before, 1e-12 * V_before);
+      for (std::size_t i = 0; i < wall_before.size(); ++i)
+        ASSERT_EQ(b.coupling->positions()[i], wall_before[i]) << "wall node " << i;
+      EXPECT_GT(quality(*b.coupling), 0.0);
+    }
+    const CouplingReport r = b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, Q));
+    ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
+    filled += Q * dt;
+    const double V = b.coupling->fluid_volume();
+    const double lambda = std::cbrt(V / V0), P = b.mean_wall_pressure();
+    const double exact = balloon_pressure(lambda);
+    std::printf(
+        "[ coupling ] remeshed run step %d: %d iterations, V = %.4f ml (%+.1e), P = %.2f "
+        "Pa (analytic %.2f, %+.2f %%)\n",
+        s, r.iterations, V * 1e6, V / (V0 + filled) - 1, P, exact, 100 * (P / exact - 1));
+    EXPECT_NEAR(V, V0 + filled, 1e-6 * (V0 + filled)) << "step " << s;
+    EXPECT_NEAR(P, exact, 0.03 * exact) << "step " << s;
+  }
+}
+
+TEST(FluidWallCoupling, RemeshingTransfersLinearFieldsExactly) {
+  // P1 interpolation reproduces a linear field whatever the new nodes: an independent
+  // truth for the point location and the transfer, on a wall moved by one filling step.
+  CoupledBalloon b(8);
+  ASSERT_TRUE(b.coupling->step(2.0, WallLoads{}, inflow_at_node(b.wall, b.inlet, 1e-6)).converged);
+  Eigen::Matrix3d A;
+  A << 1.0, -2.0, 0.5, 0.3, 0.7, -1.1, 2.0, 0.1, -0.4;             // 1/s
+  const Eigen::Vector3d c(0.01, -0.02, 0.005), g(3e3, -1e4, 5e3);  // m/s, Pa/m
+  const auto linear = [&](const std::vector<Eigen::Vector3d>& x) {
+    Eigen::VectorXd state(kDofsPerNode * static_cast<Eigen::Index>(x.size()));
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      state.segment<3>(kDofsPerNode * i) = A * x[i] + c;
+      state[kDofsPerNode * i + 3] = 1e3 + g.dot(x[i]);
+    }
+    return state;
+  };
+  b.coupling->set_state(linear(b.coupling->positions()));
+  const std::size_t nodes_before = b.coupling->positions().size();
+  b.coupling->remesh(4.0);  // 4 mm edges, finer than the first mesh: new interior nodes
+  const Eigen::VectorXd exact = linear(b.coupling->positions());
+  ASSERT_EQ(b.coupling->state().size(), exact.size());
+  // Velocity and pressure each against their own size (m/s and Pa differ by 1e4 here).
+  const auto n = static_cast<Eigen::Index>(b.coupling->positions().size());
+  const Eigen::Map<const Eigen::MatrixXd> got(b.coupling->state().data(), kDofsPerNode, n);
+  const Eigen::Map<const Eigen::MatrixXd> want(exact.data(), kDofsPerNode, n);
+  const double u_error = (got.topRows(3) - want.topRows(3)).cwiseAbs().maxCoeff();
+  const double p_error = (got.row(3) - want.row(3)).cwiseAbs().maxCoeff();
+  const double u_scale = want.topRows(3).cwiseAbs().maxCoeff();
+  const double p_scale = want.row(3).cwiseAbs().maxCoeff();
+  std::printf(
+      "[ coupling ] transfer: %zu -> %zu nodes, max error u %.2e of %.2e m/s, p %.2e of "
+      "%.2e Pa\n",
+      nodes_before, b.coupling->positions().size(), u_error, u_scale, p_error, p_scale);
+  EXPECT_LE(u_error, 1e-12 * u_scale);
+  EXPECT_LE(p_error, 1e-12 * p_scale);
 }

@@ -26,7 +26,7 @@
 namespace vesica::simulate::fluid {
 namespace {
 
-// Below this radius ratio the ALE mesh should be rebuilt (docs/navier-stokes.md §1).
+// Below this radius ratio the ALE mesh is rebuilt (docs/navier-stokes.md §1).
 constexpr double kRemeshRadiusRatio = 0.1;
 constexpr int kMaxCutbacks = 5;
 
@@ -76,7 +76,6 @@ class FluidCystometryDriver {
                         const CystometryProtocol& protocol, const FluidRunOptions& options)
       : material_(material),
         wall_(wall),
-        urine_(urine),
         protocol_(protocol),
         options_(options),
         problem_(wall, material, options.threads),
@@ -87,7 +86,10 @@ class FluidCystometryDriver {
     fluid.viscosity = options.urine_viscosity;
     fluid.gravity = gravity_;
     fluid_ = fluid;
-    coupling_ = std::make_unique<FluidWallCoupling>(problem_, urine_, fluid, options.coupling);
+    coupling_ = std::make_unique<FluidWallCoupling>(problem_, urine, fluid, options.coupling);
+    built_quality_ = mesh_quality();
+    initial_tets_ = urine.tets.size();
+    initial_nodes_ = urine.nodes.size();
     // At rest the urine's hydrostatic pressure balances the abdomen's (same density and
     // reference height): the stress-free wall is in equilibrium at t = 0.
     coupling_->set_hydrostatic_state(units::pa_from_cmh2o(protocol.pabd_cmh2o), x_ref_);
@@ -218,14 +220,36 @@ class FluidCystometryDriver {
     throw StepFailed(failure + " after " + std::to_string(kMaxCutbacks) + " step cut-backs");
   }
 
+  // Smallest radius ratio of the urine tetrahedra now, signed relative to their
+  // orientation where they were built.
+  double mesh_quality() const {
+    const FluidMesh& built = coupling_->mesh();
+    return min_radius_ratio(coupling_->positions(), built.nodes, built.tets);
+  }
+
+  // Remeshes once the tetrahedra have degraded below the threshold. Tetrahedra built
+  // below it already (gmsh's best on a poor wall) wait until they have lost half of
+  // their quality, so that such a wall is not remeshed at every step.
   void check_mesh() {
-    const double q = min_radius_ratio(coupling_->positions(), urine_.nodes, urine_.tets);
+    const double q = mesh_quality();
     min_quality_ = std::min(min_quality_, q);
-    if (q < kRemeshRadiusRatio && !quality_warned_) {
-      quality_warned_ = true;
-      result_.notes.push_back("urine mesh quality fell to radius ratio " + std::to_string(q) +
-                              " (remeshing not implemented yet; results near the worst "
-                              "elements are less accurate)");
+    const double threshold =
+        built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
+    if (remesh_failed_ || q >= threshold) return;
+    try {
+      const int tets = coupling_->remesh();
+      ++remeshes_;
+      built_quality_ = mesh_quality();
+      vesica::log()->info(
+          "level 2: urine remeshed at t = {} s (radius ratio {:.3f} -> {:.3f}, {} "
+          "tetrahedra)",
+          t_, q, built_quality_, tets);
+    } catch (const std::exception& e) {
+      // The old tetrahedra stay; no retry, so that a wall gmsh cannot mesh (e.g. folded
+      // into itself) does not cost a failed gmsh run at every step.
+      remesh_failed_ = true;
+      result_.notes.push_back("urine remeshing failed at radius ratio " + std::to_string(q) + " (" +
+                              e.what() + "); the degraded tetrahedra stay");
       vesica::log()->warn("{}", result_.notes.back());
     }
   }
@@ -304,7 +328,8 @@ class FluidCystometryDriver {
         result_.notes.push_back("level-2 voiding ended at " +
                                 std::to_string(units::ml_from_m3(volume())) +
                                 " ml, below the stress-free volume, where the slack wall "
-                                "folds into the urine mesh (" + e.what() + ")");
+                                "folds into the urine mesh (" +
+                                e.what() + ")");
         vesica::log()->warn("{}", result_.notes.back());
         break;
       }
@@ -343,7 +368,7 @@ class FluidCystometryDriver {
     const double expected = V_start_ + infused_ - voided_;
     mass_error_ = std::max(mass_error_, std::abs(volume() - expected) / expected);
     const Eigen::VectorXd& U = coupling_->state();
-    for (std::size_t i = 0; i < urine_.nodes.size(); ++i)
+    for (std::size_t i = 0; i < coupling_->positions().size(); ++i)
       max_speed_ = std::max(max_speed_, U.segment<3>(kDofsPerNode * i).norm());
     report_progress(row);
     frame(false);
@@ -407,8 +432,9 @@ class FluidCystometryDriver {
     if (!result_.completed) s["failure"] = result_.failure;
     s["triangles"] = wall_.triangle_count();
     s["nodes"] = wall_.node_count();
-    s["tetrahedra"] = urine_.tets.size();
-    s["urine_nodes"] = urine_.nodes.size();
+    s["tetrahedra"] = initial_tets_;
+    s["urine_nodes"] = initial_nodes_;
+    s["final_tetrahedra"] = coupling_->mesh().tets.size();
     s["reference_volume_ml"] = units::ml_from_m3(V_reference_);
     summarize_history(result_.history, capacity_index_, s);
     s["max_wall_stress_kpa"] = units::kpa_from_pa(max_stress_);
@@ -416,7 +442,7 @@ class FluidCystometryDriver {
     s["max_wall_shear_pa"] = max_shear_;
     s["mass_balance_error_max_rel"] = mass_error_;
     s["min_tet_radius_ratio"] = min_quality_;
-    s["remeshes"] = 0;
+    s["remeshes"] = remeshes_;
     s["newton"] = {{"steps", steps_},
                    {"iterations", iterations_},
                    {"cutbacks", cutbacks_},
@@ -433,7 +459,6 @@ class FluidCystometryDriver {
 
   const Material& material_;
   const WallModel& wall_;
-  const FluidMesh& urine_;
   const CystometryProtocol& protocol_;
   const FluidRunOptions& options_;
   MembraneProblem problem_;
@@ -450,11 +475,13 @@ class FluidCystometryDriver {
   double V_reference_ = 0.0;  // stress-free volume of the wall (m³)
   double mass_error_ = 0.0, max_stress_ = 0.0, max_speed_ = 0.0, max_shear_ = 0.0;
   double min_quality_ = 1.0, step_seconds_ = 0.0;
+  double built_quality_ = 1.0;  // of the tetrahedra as built (start or last remesh)
   double next_frame_ = 0.0, last_frame_ = -1.0;
-  int steps_ = 0, iterations_ = 0, cutbacks_ = 0, max_iterations_ = 0;
+  int steps_ = 0, iterations_ = 0, cutbacks_ = 0, max_iterations_ = 0, remeshes_ = 0;
+  std::size_t initial_tets_ = 0, initial_nodes_ = 0;
   std::size_t capacity_index_ = 0;
   std::map<std::string, double> phase_seconds_;  // wall-clock time of settle, filling, voiding
-  bool voiding_ = false, filled_ = false, quality_warned_ = false;
+  bool voiding_ = false, filled_ = false, remesh_failed_ = false;
 };
 
 }  // namespace

@@ -12,8 +12,10 @@
 
 #include "vesica/core/Log.h"
 #include "vesica/simulate/PressureLoad.h"
+#include "vesica/simulate/fluid/CavityTetrahedra.h"
 #include "vesica/simulate/fluid/FluidProblem.h"
 #include "vesica/simulate/fluid/MeshMotion.h"
+#include "vesica/simulate/fluid/MeshTransfer.h"
 #include "vesica/simulate/fluid/StabilizedTet.h"
 #include "vesica/simulate/fluid/TetQuality.h"
 
@@ -95,7 +97,7 @@ FluidWallCoupling::FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mes
   for (std::size_t i = 0; i < n_wall; ++i)
     if ((mesh.nodes[i] - wall.wall().nodes[i]).norm() > 1e-9)
       throw std::invalid_argument("tet mesh does not start with the wall nodes");
-  unknowns_ = std::make_unique<Unknowns>(mesh, FluidBoundary{}, fluid);
+  unknowns_ = std::make_unique<Unknowns>(mesh_, FluidBoundary{}, fluid);
   Eigen::AlignedBox3d box;
   for (const auto& p : wall.wall().nodes) box.extend(p);
   x_hydrostatic_ = box.center();
@@ -107,9 +109,9 @@ FluidWallCoupling::FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mes
     for (int k = 0; k < 3; ++k)
       edges += (wall.wall().nodes[t[(k + 1) % 3]] - wall.wall().nodes[t[k]]).norm();
   mean_edge_ = edges / (3.0 * static_cast<double>(wall.wall().triangle_count()));
-  motion_ = std::make_unique<HarmonicMeshMotion>(mesh, wall_flags(mesh.nodes.size(), n_wall));
+  motion_ = std::make_unique<HarmonicMeshMotion>(mesh_, wall_flags(mesh_.nodes.size(), n_wall));
   build_unknowns();
-  x_ = x_old_ = mesh.nodes;
+  x_ = x_old_ = mesh_.nodes;
   wall_velocity_.assign(n_wall, Eigen::Vector3d::Zero());
   state_ = state_old_ = Eigen::VectorXd::Zero(unknowns_->problem.dof_count());
 }
@@ -539,11 +541,7 @@ void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
   require_held_inner_nodes(wall_, outlet.faces, "outlet");
   outlet_ = outlet;
   outlet_open_ = true;
-  // The law is in the full pressure at the patch centroid; the unknown is p̃ there.
-  FluidBoundary boundary;
-  boundary.outlets.push_back(outlet);
-  boundary.outlets[0].opening_pressure -= hydrostatic_part().at(patch_centroid(outlet.faces, x_));
-  unknowns_ = std::make_unique<Unknowns>(mesh_, boundary, fluid_);
+  unknowns_ = std::make_unique<Unknowns>(mesh_, outlet_boundary(), fluid_);
   build_unknowns();
   const int last = unknowns_->problem.node_dof_count();
   state_.conservativeResize(last + 1);
@@ -551,6 +549,16 @@ void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
   // Start p_out from the urine's pressure at the outlet centroid (the hydrostatic part
   // over the patch is in the law, FluidMesh.h).
   state_[last] = state_old_[last] = patch_mean_pressure(outlet.faces, x_, state_);
+}
+
+FluidBoundary FluidWallCoupling::outlet_boundary() const {
+  FluidBoundary boundary;
+  if (!outlet_open_) return boundary;
+  // The law is in the full pressure at the patch centroid; the unknown is p̃ there (the
+  // patch is held, so its centroid never moves).
+  boundary.outlets.push_back(outlet_);
+  boundary.outlets[0].opening_pressure -= hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+  return boundary;
 }
 
 double FluidWallCoupling::outflow() const {
@@ -567,6 +575,55 @@ double FluidWallCoupling::outlet_pressure() const {
   if (!outlet_open_) return 0.0;
   return state_[unknowns_->problem.node_dof_count()] +
          hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+}
+
+namespace {
+
+// The state on the new nodes: the wall nodes (the same in both meshes) and the outlet
+// pressure copied, the interior nodes interpolated at their locations in the old mesh.
+Eigen::VectorXd transferred_state(const Eigen::VectorXd& old_state, std::size_t n_wall,
+                                  std::size_t n_new, bool outlet,
+                                  const std::vector<std::array<int, 4>>& old_tets,
+                                  const std::vector<TetLocation>& interior) {
+  const auto wall_dofs = static_cast<Eigen::Index>(kDofsPerNode * n_wall);
+  Eigen::VectorXd state(kDofsPerNode * static_cast<Eigen::Index>(n_new) + (outlet ? 1 : 0));
+  state.head(wall_dofs) = old_state.head(wall_dofs);
+  state.segment(wall_dofs, kDofsPerNode * static_cast<Eigen::Index>(interior.size())) =
+      interpolate_field(old_state, kDofsPerNode, old_tets, interior);
+  if (outlet) state[state.size() - 1] = old_state[old_state.size() - 1];
+  return state;
+}
+
+}  // namespace
+
+int FluidWallCoupling::remesh(double max_size_mm) {
+  const std::size_t n_wall = wall_.wall().node_count();
+  const std::vector<Eigen::Vector3d> x_wall(x_.begin(), x_.begin() + static_cast<long>(n_wall));
+  FluidMesh fresh = cavity_tetrahedra(wall_.wall(), x_wall, max_size_mm);
+  // Interpolating the modified pressure p̃ is the same as interpolating p: they differ by
+  // a field linear in x, which P1 carries exactly.
+  const std::vector<Eigen::Vector3d> interior_nodes(fresh.nodes.begin() + static_cast<long>(n_wall),
+                                                    fresh.nodes.end());
+  const std::vector<TetLocation> where = locate_points(x_, mesh_.tets, interior_nodes);
+  const Eigen::VectorXd state =
+      transferred_state(state_, n_wall, fresh.nodes.size(), outlet_open_, mesh_.tets, where);
+  const Eigen::VectorXd state_old =
+      transferred_state(state_old_, n_wall, fresh.nodes.size(), outlet_open_, mesh_.tets, where);
+  // The new mesh is the reference from now on: the mesh motion's displacement is
+  // x_wall − mesh_.nodes[wall], zero at the current wall, as it must be.
+  mesh_ = std::move(fresh);
+  x_ = x_old_ = mesh_.nodes;
+  motion_ = std::make_unique<HarmonicMeshMotion>(mesh_, wall_flags(mesh_.nodes.size(), n_wall));
+  unknowns_ = std::make_unique<Unknowns>(mesh_, outlet_boundary(), fluid_);
+  build_unknowns();
+  state_ = state;
+  state_old_ = state_old;
+  return static_cast<int>(mesh_.tets.size());
+}
+
+void FluidWallCoupling::set_state(const Eigen::VectorXd& state) {
+  if (state.size() != state_.size()) throw std::invalid_argument("set_state: wrong size");
+  state_ = state_old_ = state;
 }
 
 FluidMesh FluidWallCoupling::current_mesh() const {

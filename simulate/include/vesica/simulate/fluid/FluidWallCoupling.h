@@ -61,7 +61,8 @@ struct CouplingReport {
 class FluidWallCoupling {
  public:
   // mesh: tetrahedra whose nodes 0..N−1 are the wall's nodes (N = wall node count, same
-  // reference positions), as vesica-mesh builds them. Keeps references to wall and mesh.
+  // reference positions), as vesica-mesh builds them. Keeps a reference to wall and a copy
+  // of mesh (remesh() replaces it).
   // Throws std::invalid_argument when the mesh does not start with the wall nodes.
   FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mesh, const FluidProperties& fluid,
                     CouplingOptions options = {});
@@ -100,6 +101,18 @@ class FluidWallCoupling {
   // The tetrahedra at the current positions.
   FluidMesh current_mesh() const;
   const std::vector<Eigen::Vector3d>& wall_velocity() const { return wall_velocity_; }
+  // The tetrahedra at the positions where they were built (the reference mesh, or the
+  // wall at the last remesh()): the reference of the mesh motion and of the orientation.
+  const FluidMesh& mesh() const { return mesh_; }
+  // Rebuilds the tetrahedra from the wall at its current positions with gmsh (the wall
+  // nodes stay nodes 0..N−1), when the moving ones have degraded (docs/navier-stokes.md
+  // §1). The urine state (now and at t_n) moves to the new nodes by P1 interpolation in the
+  // old tetrahedra; the wall, its velocities and the outlet stay. Call between steps.
+  // max_size_mm: longest new tet edge (0 = the current wall's mean edge). Returns the new
+  // tetrahedron count; throws vesica::Error when gmsh fails (the old mesh then stays).
+  int remesh(double max_size_mm = 0.0);
+  // Sets the urine state, now and at t_n (size and units as state()), e.g. an initial flow.
+  void set_state(const Eigen::VectorXd& state);
   // Volume of the tetrahedra at the current positions (m³).
   double fluid_volume() const;
   // ½ ∫ ρ |u|² with the P1 mass lumped (V_e/4 per corner), J.
@@ -108,6 +121,7 @@ class FluidWallCoupling {
  private:
   struct Unknowns;
   void build_unknowns();
+  FluidBoundary outlet_boundary() const;  // the open outlet's law in the modified pressure
   void set_wall_velocities(const std::vector<Eigen::Vector3d>& x_wall, double dt,
                            const Inflow& inflow);
   void move_mesh(const std::vector<Eigen::Vector3d>& x_wall);        // interior by mesh motion
@@ -126,7 +140,7 @@ class FluidWallCoupling {
               const Inflow& inflow);
 
   MembraneProblem& wall_;
-  const FluidMesh& mesh_;
+  FluidMesh mesh_;
   FluidProperties fluid_;
   CouplingOptions options_;
   std::unique_ptr<Unknowns> unknowns_;
