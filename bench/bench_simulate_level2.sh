@@ -3,9 +3,7 @@
 # of the real CT bladder of ../shared: the reference label -> a ≈ 2,300-triangle wall
 # with its outlet patch at the neck (vesica-surface) -> ≈ 21,000 urine tetrahedra
 # (vesica-mesh --fluid --tet-size-mm 4.5) -> vesica-simulate --level 2: 50 -> 100 ml at
-# 50 ml/min (60 s of simulated time), then 3 s of voiding by straining (down to about
-# 60 ml: below the 45 ml stress-free volume the slack wall needs many small steps, at
-# level 1 too; docs/navier-stokes.md). Target: the filling in
+# 50 ml/min (60 s of simulated time), then voiding by straining. Target: the filling in
 # < 30 minutes on 2 cores. Prints one JSON object: mesh sizes, the seconds of the settle
 # (level 1, 45 -> 50 ml), filling and voiding phases, steps, Newton iterations, time per
 # step, remeshes, and the read-outs. Usage: bench_simulate_level2.sh BUILD_DIR [OUTDIR]
@@ -26,7 +24,7 @@ mkdir -p "$work"
   --json > "$work/mesh.json"
 t0=$(date +%s%N)
 "$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 --mu-kpa 3 \
-  --capacity-ml 100 --straining-kpa 4 --residual-ml 45 --max-void-s 3 --json > "$work/simulate.json" || true
+  --capacity-ml 100 --straining-kpa 4 --residual-ml 45 --json > "$work/simulate.json" || true
 t1=$(date +%s%N)
 
 python3 - "$work" "$t0" "$t1" <<'PY'

@@ -5,7 +5,6 @@
 // Usage: bench_simulate [balloon|cystometry-small|cystometry-large|balloon-and-small|all]
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -66,14 +65,10 @@ nlohmann::json cystometry(int n, double target_s) {
   CystometryProtocol p;
   p.straining_kpa = 4.0;  // voiding by abdominal straining, as in the demo
   RunOptions o;
-  // VESICA_BENCH_WRINKLING=1: the tension-field wall (--wrinkling).
-  const char* wrinkling = std::getenv("VESICA_BENCH_WRINKLING");
-  o.tension_field = wrinkling && std::string(wrinkling) == "1";
   const auto t0 = std::chrono::steady_clock::now();
   const CystometryResult r =
       run_cystometry(wall, {"neo-hookean", {{"mu", 3e3}, {"K_per_mu", 1e3}}}, p, o);
   nlohmann::json j = {{"triangles", wall.triangle_count()},
-                      {"wrinkling", o.tension_field},
                       {"completed", r.completed},
                       {"seconds", seconds_since(t0)},
                       {"target_seconds", target_s}};

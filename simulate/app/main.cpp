@@ -52,7 +52,6 @@ struct Cli {
   bool dynamic = false;
   double bossak_alpha = -0.1;
   int level = 1;
-  bool wrinkling = false;
   fluid::FluidRunOptions fluid;
   WallOptions wall;
   CystometryProtocol protocol;
@@ -169,9 +168,6 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--urine-viscosity-pa-s", c.fluid.urine_viscosity, "level 2: urine viscosity")
       ->capture_default_str();
-  app.add_flag("--wrinkling", c.wrinkling,
-               "the wall carries no compression (tension-field membrane): a collapsing wall "
-               "wrinkles instead of buckling");
   app.add_flag("--no-series", c.no_series, "do not write the .pvd/.vtu series");
   add_common_options(app, common);
 
@@ -199,7 +195,6 @@ int main(int argc, char** argv) {
     if (!(c.bossak_alpha >= -1.0 / 3.0 && c.bossak_alpha <= 0.0))
       usage_error("--bossak-alpha must lie in [-1/3, 0]");
     options.dynamic = c.dynamic;
-    options.tension_field = c.wrinkling;
     options.bossak_alpha = c.bossak_alpha;
     options.reference = c.wall.reference;
     Progress progress("simulate");  // silent with --json or off a terminal
@@ -211,7 +206,6 @@ int main(int argc, char** argv) {
     params["residual_ml"] = c.wall.residual_ml;
     params["posture"] = c.posture;
     params["dynamic"] = c.dynamic;
-    params["wrinkling"] = c.wrinkling;
     if (c.dynamic) params["bossak_alpha"] = c.bossak_alpha;
     params["gravity"] = p.gravity;
     params["start_ml"] = p.start_ml;

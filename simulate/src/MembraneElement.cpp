@@ -1,9 +1,7 @@
 #include "vesica/simulate/MembraneElement.h"
 
 #include <cmath>
-
 #include <stdexcept>
-#include "vesica/simulate/TensionField.h"
 
 namespace vesica::simulate {
 
@@ -34,14 +32,13 @@ MembraneGeometry membrane_geometry(const std::array<Eigen::Vector3d, 3>& X, doub
 MembraneResponse membrane_response(const MembraneGeometry& geo,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,
-                                   double C33_guess, const double* history_old, double* history_new,
-                                   bool tension_field) {
+                                   double C33_guess, const double* history_old,
+                                   double* history_new) {
   MembraneResponse r;
   r.g.setZero();
   for (int a = 0; a < 3; ++a) r.g += x[a] * geo.dN.col(a).transpose();
   const Eigen::Matrix2d C2 = r.g.transpose() * r.g;
   r.stress = plane_stress(material, C2, point, C33_guess, history_old, history_new);
-  if (tension_field) relax_compression(r.stress);
   const Eigen::Matrix2d& S = r.stress.S;
   const double HA = geo.H * geo.area0;
 

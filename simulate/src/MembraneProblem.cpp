@@ -151,8 +151,8 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     point.active_stress_pa = loads.active_stress_pa;
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
     double* h_new = history_size_ ? &self->history_new_[e * history_size_] : nullptr;
-    const MembraneResponse m = membrane_response(geometry_[e], xe, material_, point, C33_old_[e],
-                                                 h_old, h_new, tension_field_);
+    const MembraneResponse m =
+        membrane_response(geometry_[e], xe, material_, point, C33_old_[e], h_old, h_new);
     self->C33_new_[e] = m.stress.C33;
     const PressureResponse p = pressure_response(xe, loads.inside, loads.outside);
     self->element_f_[e] = m.f_int;
@@ -234,9 +234,9 @@ std::vector<MembraneStressOutput> MembraneProblem::element_outputs(
     std::vector<double> scratch(history_size_);
     // The committed state is what history_new_ held at the last commit.
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
-    const MembraneResponse m = membrane_response(
-        geometry_[e], corners(x, wall_.triangles[e]), material_, point, C33_old_[e], h_old,
-        history_size_ ? scratch.data() : nullptr, tension_field_);
+    const MembraneResponse m =
+        membrane_response(geometry_[e], corners(x, wall_.triangles[e]), material_, point,
+                          C33_old_[e], h_old, history_size_ ? scratch.data() : nullptr);
     out[e] = membrane_stress_output(geometry_[e], m);
   });
   return out;

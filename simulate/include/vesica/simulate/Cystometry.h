@@ -94,8 +94,6 @@ struct RunOptions {
   // α_B ∈ [-1/3, 0] (0: no numerical damping).
   bool dynamic = false;
   double bossak_alpha = -0.1;
-  // Wrinkling: the wall carries no compression (tension field, TensionField.h).
-  bool tension_field = false;
   ReferenceState reference = ReferenceState::Scale;
   NewtonOptions newton;
   // Called after every step with what is being done ("filling 120 ml") and the fraction

@@ -33,12 +33,11 @@ struct MembraneResponse {
   PlaneStressState stress;
 };
 
-// tension_field: the wrinkling modification of TensionField.h on the stress and tangent.
 MembraneResponse membrane_response(const MembraneGeometry& geometry,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,
-                                   double C33_guess, const double* history_old, double* history_new,
-                                   bool tension_field = false);
+                                   double C33_guess, const double* history_old,
+                                   double* history_new);
 
 // Cauchy stress and thickness of a response, for output: σ = (1/J) g S gᵀ, J = h A/(H A0).
 struct MembraneStressOutput {

@@ -58,9 +58,6 @@ class MembraneProblem {
   // Reference tributary area per node, a third of each adjacent triangle's (m²).
   const std::vector<double>& node_areas() const { return node_area_; }
 
-  // Wrinkling: the tension-field modification of every element (TensionField.h).
-  void set_tension_field(bool on) { tension_field_ = on; }
-
   // Evaluates every element at x with the committed history; tangent only when asked.
   // Throws std::runtime_error when an element fails (inverted, thickness iteration).
   void assemble(const std::vector<Eigen::Vector3d>& x, const WallLoads& loads, bool with_tangent,
@@ -87,7 +84,6 @@ class MembraneProblem {
   const WallModel& wall_;
   const Material& material_;
   int threads_;
-  bool tension_field_ = false;
   std::vector<MembraneGeometry> geometry_;
   std::vector<MaterialPoint> points_;
   std::vector<int> dof_;
