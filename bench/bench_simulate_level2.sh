@@ -41,6 +41,7 @@ out = {
         "voiding_s": phases.get("voiding"), "total_s": (t1 - t0) / 1e9,
         "filling_target_s": 1800.0,
         "newton": s.get("newton"), "remeshes": s.get("remeshes"),
+        "final_tetrahedra": s.get("final_tetrahedra"),
         "min_tet_radius_ratio": s.get("min_tet_radius_ratio"),
         "pdet_at_capacity_cmh2o": s.get("pdet_at_capacity_cmh2o"),
         "qmax_ml_s": s.get("qmax_ml_s"), "voided_ml": s.get("voided_ml"),
