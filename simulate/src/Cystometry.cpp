@@ -110,17 +110,8 @@ class CystometryDriver {
 
   void report_progress(const HistoryRow& row) const {
     if (!options_.on_progress) return;
-    char step[64];
-    if (!voiding_) {
-      const double span = protocol_.capacity_ml - protocol_.start_ml;
-      const double done = span > 0.0 ? std::clamp(row.infused_ml / span, 0.0, 1.0) : 1.0;
-      std::snprintf(step, sizeof step, "filling %.0f ml", row.volume_ml);
-      options_.on_progress(step, 0.8 * done);
-    } else {
-      const double total = row.voided_ml + row.volume_ml;
-      std::snprintf(step, sizeof step, "voiding %.0f ml", row.volume_ml);
-      options_.on_progress(step, 0.8 + 0.2 * (total > 0.0 ? row.voided_ml / total : 1.0));
-    }
+    const auto [step, fraction] = protocol_progress(row, protocol_, voiding_);
+    options_.on_progress(step, fraction);
   }
 
   void frame(bool force) {

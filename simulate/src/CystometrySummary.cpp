@@ -1,6 +1,7 @@
 #include "vesica/simulate/CystometrySummary.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace vesica::simulate {
 
@@ -42,6 +43,20 @@ void summarize_history(const std::vector<HistoryRow>& h, std::size_t capacity_in
     s["booi"] = pdet_qmax - 2.0 * qmax;
     s["bci"] = pdet_qmax + 5.0 * qmax;
   }
+}
+
+std::pair<std::string, double> protocol_progress(const HistoryRow& row,
+                                                 const CystometryProtocol& protocol, bool voiding) {
+  char step[64];
+  if (!voiding) {
+    const double span = protocol.capacity_ml - protocol.start_ml;
+    const double done = span > 0.0 ? std::clamp(row.infused_ml / span, 0.0, 1.0) : 1.0;
+    std::snprintf(step, sizeof step, "filling %.0f ml", row.volume_ml);
+    return {step, 0.8 * done};
+  }
+  const double total = row.voided_ml + row.volume_ml;
+  std::snprintf(step, sizeof step, "voiding %.0f ml", row.volume_ml);
+  return {step, 0.8 + 0.2 * (total > 0.0 ? row.voided_ml / total : 1.0)};
 }
 
 }  // namespace vesica::simulate

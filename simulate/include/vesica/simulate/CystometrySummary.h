@@ -4,6 +4,8 @@
 // capacity, Pdet at capacity, compliance; after the capacity row, Qmax, Pdet at Qmax,
 // voided volume, PVR, flow and voiding times, Qave, efficiency, BOOI and BCI.
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -16,5 +18,10 @@ namespace vesica::simulate {
 // keys to summary (units in the key names).
 void summarize_history(const std::vector<HistoryRow>& history, std::size_t capacity_index,
                        nlohmann::json& summary);
+
+// The progress line after a history row ("filling 120 ml") and the fraction of the
+// protocol done (filling up to 0.8, voiding after), for RunOptions::on_progress.
+std::pair<std::string, double> protocol_progress(const HistoryRow& row,
+                                                 const CystometryProtocol& protocol, bool voiding);
 
 }  // namespace vesica::simulate
