@@ -235,7 +235,10 @@ class FluidCystometryDriver {
     min_quality_ = std::min(min_quality_, q);
     const double threshold =
         built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
-    if (remesh_failed_ || q >= threshold) return;
+    // Not while the urethra is open: on the 22,205-tet CT bladder, voiding after a remesh
+    // stalled in failing Newton attempts (the new mesh's outlet region is coarser than
+    // the flow through it); the voiding meshes so far keep their quality above zero.
+    if (remesh_failed_ || q >= threshold || coupling_->outlet_open()) return;
     try {
       const int tets = coupling_->remesh();
       ++remeshes_;
