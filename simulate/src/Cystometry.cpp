@@ -73,11 +73,7 @@ class CystometryDriver {
       if (protocol_.void_after_fill && !options_.filling_only) void_bladder();
       result_.completed = true;
     } catch (const CavityRun::StepFailed& e) {
-      std::ostringstream s;
-      s.precision(6);
-      s << "step failed at t = " << run_.time() << " s, V = " << units::ml_from_m3(run_.volume())
-        << " ml: " << e.what();
-      result_.failure = s.str();
+      result_.failure = step_failure_text(run_.time(), run_.volume(), e.what());
       // Failed while filling: every row is filling, none is voiding.
       if (!filled_ && !result_.history.empty()) capacity_index_ = result_.history.size() - 1;
       vesica::log()->error("{}", result_.failure);

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <sstream>
+
+#include "vesica/core/Units.h"
 
 namespace vesica::simulate {
 
@@ -43,6 +46,14 @@ void summarize_history(const std::vector<HistoryRow>& h, std::size_t capacity_in
     s["booi"] = pdet_qmax - 2.0 * qmax;
     s["bci"] = pdet_qmax + 5.0 * qmax;
   }
+}
+
+std::string step_failure_text(double t_s, double volume_m3, const std::string& reason) {
+  std::ostringstream s;
+  s.precision(6);
+  s << "step failed at t = " << t_s << " s, V = " << units::ml_from_m3(volume_m3)
+    << " ml: " << reason;
+  return s.str();
 }
 
 std::pair<std::string, double> protocol_progress(const HistoryRow& row,

@@ -128,11 +128,7 @@ class FluidCystometryDriver {
       result_.failure = std::string("settling to the start volume (level 1) failed: ") + e.what();
       vesica::log()->error("{}", result_.failure);
     } catch (const StepFailed& e) {
-      std::ostringstream s;
-      s.precision(6);
-      s << "step failed at t = " << t_ << " s, V = " << units::ml_from_m3(volume())
-        << " ml: " << e.what();
-      result_.failure = s.str();
+      result_.failure = step_failure_text(t_, volume(), e.what());
       if (!filled_ && !result_.history.empty()) capacity_index_ = result_.history.size() - 1;
       vesica::log()->error("{}", result_.failure);
     }

@@ -19,6 +19,10 @@ namespace vesica::simulate {
 void summarize_history(const std::vector<HistoryRow>& history, std::size_t capacity_index,
                        nlohmann::json& summary);
 
+// The one-line reason of a run that stopped on a failed step:
+// "step failed at t = .. s, V = .. ml: <reason>" (t in s, V in m³).
+std::string step_failure_text(double t_s, double volume_m3, const std::string& reason);
+
 // The progress line after a history row ("filling 120 ml") and the fraction of the
 // protocol done (filling up to 0.8, voiding after), for RunOptions::on_progress.
 std::pair<std::string, double> protocol_progress(const HistoryRow& row,
