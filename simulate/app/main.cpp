@@ -49,6 +49,7 @@ struct Cli {
   std::string beta, tau_s;
   std::string reference = "scale", posture = "supine";
   bool no_void = false, no_gravity = false, filling_only = false, no_series = false;
+  bool no_wrinkling = false;
   bool dynamic = false;
   double bossak_alpha = -0.1;
   int level = 1;
@@ -154,6 +155,8 @@ int main(int argc, char** argv) {
   app.add_option("--wall-drag-pa-s-per-m", p.wall_drag_pa_s_per_m,
                  "viscous drag of the surrounding tissue on the wall")
       ->capture_default_str();
+  app.add_flag("--no-wrinkling", c.no_wrinkling,
+               "let the wall carry compression instead of wrinkling (tension field)");
   app.add_flag("--dynamic", c.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
   app.add_option("--bossak-alpha", c.bossak_alpha, "Bossak alpha in [-1/3, 0]")
       ->capture_default_str();
@@ -181,6 +184,7 @@ int main(int argc, char** argv) {
     c.wall.reference = c.reference == "scale" ? ReferenceState::Scale : ReferenceState::Prestress;
     p.gravity = !c.no_gravity;
     p.void_after_fill = !c.no_void;
+    p.wrinkling = !c.no_wrinkling;
     const MaterialSpec spec = material_spec(c);
     make_material(spec);  // reject bad parameters before reading anything
     WallModel wall;
@@ -219,6 +223,7 @@ int main(int argc, char** argv) {
     params["detrusor_kpa"] = p.detrusor_kpa;
     params["straining_kpa"] = p.straining_kpa;
     params["wall_drag_pa_s_per_m"] = p.wall_drag_pa_s_per_m;
+    params["wrinkling"] = p.wrinkling;
     params["level"] = c.level;
     CystometryResult result;
     if (c.level == 2) {

@@ -26,6 +26,7 @@ CavityRun::CavityRun(const WallModel& wall, const Material& material,
       problem_(wall, material, options.threads),
       solver_(problem_, options.newton),
       x_(wall.nodes) {
+  problem_.set_tension_field(protocol.wrinkling);
   const Eigen::Vector3d g =
       protocol.gravity ? gravity_lps(protocol.posture) : Eigen::Vector3d::Zero();
   loads_.inside.rho = protocol.urine_density;

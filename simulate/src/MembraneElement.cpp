@@ -32,13 +32,15 @@ MembraneGeometry membrane_geometry(const std::array<Eigen::Vector3d, 3>& X, doub
 MembraneResponse membrane_response(const MembraneGeometry& geo,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,
-                                   double C33_guess, const double* history_old,
-                                   double* history_new) {
+                                   double J2_guess, const double* history_old, double* history_new,
+                                   bool tension_field) {
   MembraneResponse r;
   r.g.setZero();
   for (int a = 0; a < 3; ++a) r.g += x[a] * geo.dN.col(a).transpose();
   const Eigen::Matrix2d C2 = r.g.transpose() * r.g;
-  r.stress = plane_stress(material, C2, point, C33_guess, history_old, history_new);
+  r.stress = tension_field
+                 ? tension_field_stress(material, C2, point, J2_guess, history_old, history_new)
+                 : plane_stress(material, C2, point, J2_guess, history_old, history_new);
   const Eigen::Matrix2d& S = r.stress.S;
   const double HA = geo.H * geo.area0;
 

@@ -60,8 +60,8 @@ MembraneProblem::MembraneProblem(const WallModel& wall, const Material& material
   history_size_ = material.history_size();
   history_old_.assign(ne * history_size_, 0.0);
   history_new_ = history_old_;
-  C33_old_.assign(ne, 1.0);
-  C33_new_ = C33_old_;
+  J2_old_.assign(ne, 1.0);
+  J2_new_ = J2_old_;
   element_K_.resize(ne);
   element_f_.resize(ne);
   element_fp_.resize(ne);
@@ -151,9 +151,9 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     point.active_stress_pa = loads.active_stress_pa;
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
     double* h_new = history_size_ ? &self->history_new_[e * history_size_] : nullptr;
-    const MembraneResponse m =
-        membrane_response(geometry_[e], xe, material_, point, C33_old_[e], h_old, h_new);
-    self->C33_new_[e] = m.stress.C33;
+    const MembraneResponse m = membrane_response(geometry_[e], xe, material_, point, J2_new_[e],
+                                                 h_old, h_new, tension_field_);
+    self->J2_new_[e] = m.stress.J2;
     const PressureResponse p = pressure_response(xe, loads.inside, loads.outside);
     self->element_f_[e] = m.f_int;
     self->element_fp_[e] = p.f;
@@ -214,7 +214,7 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
 
 void MembraneProblem::commit() {
   history_old_ = history_new_;
-  C33_old_ = C33_new_;
+  J2_old_ = J2_new_;
 }
 
 void MembraneProblem::apply_increment(const Eigen::VectorXd& du,
@@ -234,9 +234,9 @@ std::vector<MembraneStressOutput> MembraneProblem::element_outputs(
     std::vector<double> scratch(history_size_);
     // The committed state is what history_new_ held at the last commit.
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
-    const MembraneResponse m =
-        membrane_response(geometry_[e], corners(x, wall_.triangles[e]), material_, point,
-                          C33_old_[e], h_old, history_size_ ? scratch.data() : nullptr);
+    const MembraneResponse m = membrane_response(
+        geometry_[e], corners(x, wall_.triangles[e]), material_, point, J2_old_[e], h_old,
+        history_size_ ? scratch.data() : nullptr, tension_field_);
     out[e] = membrane_stress_output(geometry_[e], m);
   });
   return out;

@@ -8,6 +8,26 @@
 
 namespace vesica::simulate {
 
+namespace {
+
+// The cavity equation's residual c at pressure p0 and its derivative dc/dp0: under volume
+// control V - V_base + θ Δt Q_out(p0), under pressure control p0 - p.
+double cavity_residual(const CavityEquation& cavity, const WallAssembly& A, double p0,
+                       double* dc_dp = nullptr) {
+  double c = 0.0, d = 1.0;
+  if (cavity.volume_control) {
+    d = 0.0;
+    c = A.volume - cavity.volume_base_m3;
+    if (cavity.outflow) c += cavity.outflow(p0, d);
+  } else {
+    c = p0 - cavity.pressure_pa;
+  }
+  if (dc_dp) *dc_dp = d;
+  return c;
+}
+
+}  // namespace
+
 struct NewtonSolver::Factorization {
   LinearSolver solver;
   // The factorization holds a tangent of the last converged state (or of this solve):
@@ -73,6 +93,47 @@ bool NewtonSolver::bordered_step(const CavityEquation& cavity, double c, double 
   return true;
 }
 
+// Backtracking line search for the wrinkling wall: its elements switch between slack (no
+// stiffness) and taut (full stiffness), and the full Newton step can jump across such a
+// switch and back forever (a 2-cycle of the residual, 0.34 ↔ 0.97, with the cavity
+// equation missed by 3e-4 V each way). The merit is the sum of the squared wall residual
+// and cavity residual, each relative to its value at the start of the iteration (floored
+// at what counts as small, so that a converged part may grow a little); the step is
+// halved until the merit falls. The trial assembly, with its tangent, is kept as the next
+// iteration's, so an accepted full step costs nothing extra.
+bool NewtonSolver::line_search(const CavityEquation& cavity, WallLoads& loads,
+                               const Eigen::VectorXd& du, double dp,
+                               std::vector<Eigen::Vector3d>& x) {
+  const double r_ref = std::max(assembly_.residual.norm(), 1e-6 * assembly_.force_scale);
+  const double c_ref = std::max(std::abs(cavity_residual(cavity, assembly_, loads.inside.p0)),
+                                1e-8 * std::abs(assembly_.volume));
+  auto merit = [&](const WallAssembly& a, double p0) {
+    const double r = a.residual.norm() / r_ref, c = cavity_residual(cavity, a, p0) / c_ref;
+    return r * r + c * c;
+  };
+  const double merit0 = merit(assembly_, loads.inside.p0);
+  const std::vector<Eigen::Vector3d> x0 = x;
+  const double p0 = loads.inside.p0;
+  WallAssembly trial;
+  line_search_step_ = 1.0;
+  for (int halving = 0;; ++halving, line_search_step_ *= 0.5) {
+    x = x0;
+    problem_.apply_increment(line_search_step_ * du, x);
+    loads.inside.p0 = p0 + line_search_step_ * dp;
+    bool ok = true;
+    try {
+      problem_.assemble(x, loads, true, trial);
+    } catch (const std::runtime_error&) {
+      ok = false;  // an inverted element: the step is too long
+    }
+    if ((ok && merit(trial, loads.inside.p0) < merit0) || halving == 4) {
+      if (!ok) return false;  // assemble at the top of the next iteration reports it
+      std::swap(assembly_, trial);
+      return true;
+    }
+  }
+}
+
 NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
                                  std::vector<Eigen::Vector3d>& x) {
   NewtonReport report;
@@ -85,23 +146,20 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     return std::min(options_.max_iterations + report.regularized_iterations,
                     2 * options_.max_iterations);
   };
+  bool assembled = false;  // the line search of the last iteration assembled x already
   for (int it = 0; it <= limit(); ++it) {
-    try {
-      problem_.assemble(x, loads, true, assembly_);
-    } catch (const std::runtime_error& e) {
-      report.failure = e.what();
-      return report;
+    if (!assembled) {
+      try {
+        problem_.assemble(x, loads, true, assembly_);
+      } catch (const std::runtime_error& e) {
+        report.failure = e.what();
+        return report;
+      }
     }
+    assembled = false;
     const WallAssembly& A = assembly_;
-    double dq = 0.0, c = 0.0, dc_dp = 0.0;
-    if (cavity.volume_control) {
-      c = A.volume - cavity.volume_base_m3;
-      if (cavity.outflow) c += cavity.outflow(loads.inside.p0, dq);
-      dc_dp = dq;
-    } else {
-      c = loads.inside.p0 - cavity.pressure_pa;
-      dc_dp = 1.0;
-    }
+    double dc_dp = 0.0;
+    const double c = cavity_residual(cavity, A, loads.inside.p0, &dc_dp);
     const double r_rel = A.residual.norm() / std::max(A.force_scale, 1e-300);
     // Near zero load the relative test is meaningless: a residual that would move the
     // model by 1e-13 of its size through the stiffest dof counts as zero.
@@ -154,9 +212,13 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
       eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;
     }
     if (eta > 0.0) ++report.regularized_iterations;
-    eta_ = eta > 1e-9 * stiffness_scale ? 0.1 * eta : 0.0;
-    problem_.apply_increment(du, x);
-    loads.inside.p0 += dp;
+    if (options_.line_search && problem_.tension_field() && it > 0) {
+      assembled = line_search(cavity, loads, du, dp, x);
+      move *= line_search_step_;
+    } else {
+      problem_.apply_increment(du, x);
+      loads.inside.p0 += dp;
+    }
     last_increment = move;
   }
   report.failure = "no convergence in " + std::to_string(report.iterations) + " iterations";

@@ -81,6 +81,7 @@ class FluidCystometryDriver {
         problem_(wall, material, options.threads),
         gravity_(protocol.gravity ? gravity_lps(protocol.posture) : Eigen::Vector3d::Zero()),
         x_ref_(pressure_reference_point(wall, gravity_)) {
+    problem_.set_tension_field(protocol.wrinkling);  // the same wall law as level 1
     FluidProperties fluid;
     fluid.density = protocol.urine_density;
     fluid.viscosity = options.urine_viscosity;

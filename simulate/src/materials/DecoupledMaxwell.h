@@ -18,6 +18,7 @@ class DecoupledMaxwell : public Material {
   DecoupledMaxwell(OgdenVolumetric volumetric, std::unique_ptr<IsochoricPart> isochoric,
                    std::vector<MaxwellBranch> branches);
   std::size_t history_size() const override;
+  bool isotropic_elastic() const override { return branches_.empty() && isochoric_->isotropic(); }
   void evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point, const double* history_old,
                 double* history_new, Eigen::Matrix3d& S, Voigt6& D) const override;
 

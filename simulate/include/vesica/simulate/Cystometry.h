@@ -77,6 +77,11 @@ struct CystometryProtocol {
   // about 0.004 cmH2O at 50 ml/min, but it gives the slack wall of a scaled-down patient
   // shape (excess area, no stiffness against unfolding) a unique position at every step.
   double wall_drag_pa_s_per_m = 1e4;
+  // Tension-field wall (TensionField.h): the membrane wrinkles instead of carrying
+  // compression, as a wall without bending stiffness must; false = the plain plane-stress
+  // law, compression included (which makes the slack collapse below the reference volume
+  // at the end of voiding slow and fragile).
+  bool wrinkling = true;
   // Prestress reference: the imaged geometry is in equilibrium at this pressure.
   double image_pressure_cmh2o = 10.0;
 };

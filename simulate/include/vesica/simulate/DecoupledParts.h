@@ -36,6 +36,7 @@ class IsochoricPart {
   virtual ~IsochoricPart() = default;
   virtual void S_iso(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
                      Voigt6& D) const = 0;
+  virtual bool isotropic() const { return false; }
 };
 
 // Ogden volumetric term Ψ_vol = K β⁻² (β ln J + J^(-β) - 1):
@@ -58,6 +59,7 @@ class NeoHookeanIsochoric : public IsochoricPart {
   explicit NeoHookeanIsochoric(double mu) : mu_(mu) {}
   void S_iso(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
              Voigt6& D) const override;
+  bool isotropic() const override { return true; }
 
  private:
   double mu_;

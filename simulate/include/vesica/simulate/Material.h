@@ -33,6 +33,12 @@ class Material {
   // Number of history doubles a Gauss point stores (viscoelastic branches).
   virtual std::size_t history_size() const { return 0; }
 
+  // True for an isotropic law without history whose stress-free state is C = I: such a
+  // sheet pulled to a stretch ≤ 1 in every direction carries no tension, which lets the
+  // tension field (TensionField.h) recognize a slack element without solving for its
+  // wrinkles. The active stress of a point is checked separately.
+  virtual bool isotropic_elastic() const { return false; }
+
   // C: right Cauchy-Green tensor (3x3, symmetric). history_old: committed state of the
   // point (history_size() doubles), history_new: written with the state that belongs to
   // this C. Outputs: S second Piola-Kirchhoff stress (Pa) and D = 2 dS/dC (Pa, Voigt).

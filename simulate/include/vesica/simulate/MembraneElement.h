@@ -7,6 +7,7 @@
 
 #include "vesica/simulate/Material.h"
 #include "vesica/simulate/PlaneStress.h"
+#include "vesica/simulate/TensionField.h"
 
 namespace vesica::simulate {
 
@@ -25,7 +26,8 @@ struct MembraneGeometry {
 // X: reference node positions (m). Throws std::invalid_argument for a degenerate triangle.
 MembraneGeometry membrane_geometry(const std::array<Eigen::Vector3d, 3>& X, double H);
 
-// What one element gives at the current positions x (m).
+// What one element gives at the current positions x (m). With tension_field the stress is
+// the wrinkling membrane's (TensionField.h), else the plain plane-stress law's.
 struct MembraneResponse {
   Vector9 f_int;  // internal nodal forces f_a = H A0 S_αβ g_α ∂N_a/∂s_β (N)
   Matrix9 K;  // material (𝔻_mem) + geometric (S_αβ ∂N_a/∂s_α ∂N_b/∂s_β I₃) (N/m)
@@ -36,8 +38,8 @@ struct MembraneResponse {
 MembraneResponse membrane_response(const MembraneGeometry& geometry,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,
-                                   double C33_guess, const double* history_old,
-                                   double* history_new);
+                                   double J2_guess, const double* history_old, double* history_new,
+                                   bool tension_field = false);
 
 // Cauchy stress and thickness of a response, for output: σ = (1/J) g S gᵀ, J = h A/(H A0).
 struct MembraneStressOutput {

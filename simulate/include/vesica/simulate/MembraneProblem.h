@@ -62,6 +62,11 @@ class MembraneProblem {
   // Throws std::runtime_error when an element fails (inverted, thickness iteration).
   void assemble(const std::vector<Eigen::Vector3d>& x, const WallLoads& loads, bool with_tangent,
                 WallAssembly& out);
+  // Wrinkling membrane (TensionField.h): no compressive stress anywhere. Off by default
+  // so that the element-level verification sees the plain plane-stress law.
+  void set_tension_field(bool on) { tension_field_ = on; }
+  bool tension_field() const { return tension_field_; }
+
   // Accepts the state of the last assemble() as converged (history, thickness guesses).
   void commit();
 
@@ -84,13 +89,16 @@ class MembraneProblem {
   const WallModel& wall_;
   const Material& material_;
   int threads_;
+  bool tension_field_ = false;
   std::vector<MembraneGeometry> geometry_;
   std::vector<MaterialPoint> points_;
   std::vector<int> dof_;
   std::size_t free_count_ = 0;
   std::size_t history_size_ = 0;
   std::vector<double> history_old_, history_new_;
-  std::vector<double> C33_old_, C33_new_;
+  // Squared volume ratio per element: committed, and of the last evaluation (the guess of
+  // the next plane-stress iteration, PlaneStress.h).
+  std::vector<double> J2_old_, J2_new_;
   std::vector<double> node_area_;  // reference tributary area per node (m²)
   std::vector<double> node_mass_;  // wall mass per node (kg / (kg/m³)): H A0 / 3 sums
   // Per element: its 9x9 block (membrane - pressure) and where each entry goes in K.

@@ -45,6 +45,8 @@ struct NewtonOptions {
   // so a plain Newton step there moves nodes by orders of magnitude too far; a longer
   // step is instead shortened by the elastic-foundation regularization below.
   double max_move_per_edge = 0.5;  // 0 = off
+  // Halve a step of a wrinkling wall that would raise its residuals (NewtonSolver.cpp).
+  bool line_search = true;
 };
 
 struct NewtonReport {
@@ -69,8 +71,13 @@ class NewtonSolver {
 
  private:
   // One bordered step with K + η A; refactorizes unless `reuse` and η is unchanged.
-  bool bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta,
-                     bool reuse, Eigen::VectorXd& du, double& dp, std::string& failure);
+  bool bordered_step(const CavityEquation& cavity, double c, double dc_dp, double eta, bool reuse,
+                     Eigen::VectorXd& du, double& dp, std::string& failure);
+
+  // Applies α du, α dp with α = 1, 1/2, … 1/16, the first that lowers the merit of the
+  // wall and cavity residuals (else 1/16); returns whether assembly_ now holds x's assembly.
+  bool line_search(const CavityEquation& cavity, WallLoads& loads, const Eigen::VectorXd& du,
+                   double dp, std::vector<Eigen::Vector3d>& x);
 
   MembraneProblem& problem_;
   NewtonOptions options_;
@@ -81,8 +88,9 @@ class NewtonSolver {
   double mean_edge_ = 1.0;
   // Reference area per free dof (m²): the elastic foundation η A adds to K's diagonal.
   Eigen::VectorXd foundation_area_;
-  double eta_ = 0.0;       // foundation stiffness (Pa/m) carried over between iterations
-  double eta_in_K_ = 0.0;  // the part of it added to assembly_.K
+  double eta_ = 0.0;               // foundation stiffness (Pa/m) carried over between iterations
+  double eta_in_K_ = 0.0;          // the part of it added to assembly_.K
+  double line_search_step_ = 1.0;  // α of the last line search
 };
 
 }  // namespace vesica::simulate

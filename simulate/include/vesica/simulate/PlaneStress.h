@@ -9,17 +9,27 @@
 
 namespace vesica::simulate {
 
+// Wrinkling state of a tension-field membrane (TensionField.h); always taut otherwise.
+enum class Wrinkling { taut, wrinkled, slack };
+
 struct PlaneStressState {
   Eigen::Matrix2d S;  // in-plane S_αβ (Pa)
   Eigen::Matrix3d D;  // condensed 2 dS/dC in-plane, Voigt order 11, 22, 12 (Pa)
   double C33 = 1.0;   // squared thickness stretch
+  double J2 = 1.0;    // squared volume ratio det C = C33 det C2 (the next call's guess)
+  Wrinkling wrinkling = Wrinkling::taut;
 };
 
-// C2: in-plane C_αβ. C33_guess: start of the local iteration (last converged value).
+// C2: in-plane C_αβ. J2_guess: the squared volume ratio J² = det C the iteration starts
+// from, at C33 = J² / det C2 (≤ 0: 1, exact for an incompressible wall). J² changes far
+// less between evaluations than C33 does (a wall stretched in the plane thins), so the
+// last J² of the element is a guess within a few ulps of the root for a nearly
+// incompressible wall, even when C2 has changed a lot (a new Newton iterate, the
+// fictitious stretch of a wrinkled element).
 // Throws std::runtime_error when the local iteration does not converge (the caller cuts
 // the step back).
 PlaneStressState plane_stress(const Material& material, const Eigen::Matrix2d& C2,
-                              const MaterialPoint& point, double C33_guess,
+                              const MaterialPoint& point, double J2_guess,
                               const double* history_old, double* history_new);
 
 }  // namespace vesica::simulate

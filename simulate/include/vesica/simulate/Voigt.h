@@ -12,28 +12,6 @@ using Vector6 = Eigen::Matrix<double, 6, 1>;
 
 inline constexpr int kVoigtIndex[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
 
-// (A ⊗ B)_ijkl = A_ij B_kl.
-inline Voigt6 outer(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
-  Voigt6 D;
-  for (int I = 0; I < 6; ++I)
-    for (int J = 0; J < 6; ++J)
-      D(I, J) = A(kVoigtIndex[I][0], kVoigtIndex[I][1]) * B(kVoigtIndex[J][0], kVoigtIndex[J][1]);
-  return D;
-}
-
-// (A ⊙ A)_ijkl = (A_ik A_jl + A_il A_jk) / 2; -C⁻¹⊙C⁻¹ is dC⁻¹/dC.
-inline Voigt6 odot(const Eigen::Matrix3d& A) {
-  Voigt6 D;
-  for (int I = 0; I < 6; ++I) {
-    const int i = kVoigtIndex[I][0], j = kVoigtIndex[I][1];
-    for (int J = 0; J < 6; ++J) {
-      const int k = kVoigtIndex[J][0], l = kVoigtIndex[J][1];
-      D(I, J) = 0.5 * (A(i, k) * A(j, l) + A(i, l) * A(j, k));
-    }
-  }
-  return D;
-}
-
 inline Vector6 to_voigt(const Eigen::Matrix3d& S) {
   Vector6 v;
   for (int I = 0; I < 6; ++I) v(I) = S(kVoigtIndex[I][0], kVoigtIndex[I][1]);
@@ -47,6 +25,25 @@ inline Eigen::Matrix3d from_voigt(const Vector6& v) {
     S(kVoigtIndex[I][1], kVoigtIndex[I][0]) = v(I);
   }
   return S;
+}
+
+// (A ⊗ B)_ijkl = A_ij B_kl: the outer product of the Voigt vectors (one vectorized
+// 6x6 product; the materials form several per evaluation).
+inline Voigt6 outer(const Eigen::Matrix3d& A, const Eigen::Matrix3d& B) {
+  return to_voigt(A) * to_voigt(B).transpose();
+}
+
+// (A ⊙ A)_ijkl = (A_ik A_jl + A_il A_jk) / 2; -C⁻¹⊙C⁻¹ is dC⁻¹/dC.
+inline Voigt6 odot(const Eigen::Matrix3d& A) {
+  Voigt6 D;
+  for (int I = 0; I < 6; ++I) {
+    const int i = kVoigtIndex[I][0], j = kVoigtIndex[I][1];
+    for (int J = 0; J < 6; ++J) {
+      const int k = kVoigtIndex[J][0], l = kVoigtIndex[J][1];
+      D(I, J) = 0.5 * (A(i, k) * A(j, l) + A(i, l) * A(j, k));
+    }
+  }
+  return D;
 }
 
 }  // namespace vesica::simulate

@@ -1,0 +1,146 @@
+#include "vesica/simulate/TensionField.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vesica::simulate {
+namespace {
+
+// In-plane Voigt vectors as in PlaneStress.h: stresses (S11, S22, S12), strains
+// (E11, E22, 2 E12), the condensed tangent 𝔻 maps the second to the first.
+
+// The wrinkle geometry for an angle θ: m (wrinkle direction) and t ⊥ m (tension).
+struct WrinkleFrame {
+  Eigen::Vector2d m, t;
+  explicit WrinkleFrame(double theta)
+      : m(std::cos(theta), std::sin(theta)), t(-std::sin(theta), std::cos(theta)) {}
+  // Rows: r1 = mᵀ S m and r2 = tᵀ S m as linear functions of the stress Voigt vector.
+  Eigen::Matrix<double, 2, 3> projection() const {
+    Eigen::Matrix<double, 2, 3> P;
+    P << m(0) * m(0), m(1) * m(1), 2.0 * m(0) * m(1),  //
+        t(0) * m(0), t(1) * m(1), t(0) * m(1) + t(1) * m(0);
+    return P;
+  }
+  // Columns: d(E*)/dβ and d(E*)/dθ of the wrinkle strain E_w = β m mᵀ / 2 (Voigt, 2 E12).
+  Eigen::Matrix<double, 3, 2> strain_derivatives(double beta) const {
+    Eigen::Matrix<double, 3, 2> Ew;
+    Ew.col(0) << 0.5 * m(0) * m(0), 0.5 * m(1) * m(1), m(0) * m(1);
+    Ew.col(1) << beta * m(0) * t(0), beta * m(1) * t(1), beta * (t(0) * m(1) + m(0) * t(1));
+    return Ew;
+  }
+};
+
+// ∂(r1, r2)/∂(β, θ) at the current fictitious state: through the stress (𝔻 Ew) and through
+// the rotating projection (dr1/dθ = 2 r2, dr2/dθ = tᵀ S t - mᵀ S m).
+Eigen::Matrix2d wrinkle_jacobian(const WrinkleFrame& w, const PlaneStressState& s, double beta) {
+  Eigen::Matrix2d Jz = w.projection() * s.D * w.strain_derivatives(beta);
+  Jz(0, 1) += 2.0 * w.t.dot(s.S * w.m);
+  Jz(1, 1) += w.t.dot(s.S * w.t) - w.m.dot(s.S * w.m);
+  return Jz;
+}
+
+// The stress of a 1e-12 strain: what counts as zero (compression of the stress-free state,
+// the wrinkle equations). From the tangent of the state itself: a crumpled element's
+// plain-law tangent is orders of magnitude stiffer than its wrinkled one.
+double round_off_stress(const PlaneStressState& s) {
+  return 1e-12 * s.D.norm();
+}
+
+// A slack element carries nothing and resists nothing; its thickness is the plain law's.
+PlaneStressState slack_state(PlaneStressState s) {
+  s.S.setZero();
+  s.D.setZero();
+  s.wrinkling = Wrinkling::slack;
+  return s;
+}
+
+// r1(β) = mᵀ S(C + β m mᵀ) m at a fixed wrinkle direction, solved for r1 = 0 by Newton
+// inside a bracket (r1 rises with β: more fictitious width, less compression across),
+// bisecting when a step leaves it: near a collapsed element (C_mm → 0) the compressive
+// stress is enormous and a plain Newton step overshoots by orders of magnitude.
+// Returns false when even a large β leaves r1 negative.
+bool solve_wrinkle_width(const Material& material, const Eigen::Matrix2d& C2,
+                         const MaterialPoint& point, const double* history_old, double* history_new,
+                         const WrinkleFrame& w, double& beta, PlaneStressState& s) {
+  auto r1_at = [&](double b) {
+    s = plane_stress(material, C2 + b * w.m * w.m.transpose(), point, s.J2, history_old,
+                     history_new);
+    return w.m.dot(s.S * w.m);
+  };
+  double lo = 0.0, hi = INFINITY;
+  double r1 = r1_at(beta);
+  for (int it = 0; it < 100; ++it) {
+    if (std::abs(r1) <= round_off_stress(s)) return true;
+    (r1 > 0.0 ? hi : lo) = beta;
+    if (beta == 0.0 && r1 > 0.0) return true;  // no compression across m: not wrinkled
+    const double slope = w.projection().row(0) * s.D * w.strain_derivatives(beta).col(0);
+    double next = slope > 0.0 ? beta - r1 / slope : NAN;
+    if (!(next > lo && next < hi))
+      next = std::isfinite(hi) ? 0.5 * (lo + hi) : 2.0 * std::max(beta, 1.0);
+    if (std::abs(next - beta) <= 1e-15 * (1.0 + beta)) return true;
+    beta = next;
+    r1 = r1_at(beta);
+    if (beta > 1e6) return false;
+  }
+  return false;
+}
+
+}  // namespace
+
+PlaneStressState tension_field_stress(const Material& material, const Eigen::Matrix2d& C2,
+                                      const MaterialPoint& point, double J2_guess,
+                                      const double* history_old, double* history_new) {
+  const PlaneStressState taut =
+      plane_stress(material, C2, point, J2_guess, history_old, history_new);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal(taut.S);
+  if (principal.eigenvalues()(0) >= -round_off_stress(taut)) return taut;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> stretches(C2);
+  if (material.isotropic_elastic() && point.active_stress_pa == 0.0 &&
+      stretches.eigenvalues()(1) <= 1.0)
+    return slack_state(taut);  // shortened in every direction: no wrinkle carries tension
+
+  // Wrinkles run across the most shortened direction: m starts as C's eigenvector of the
+  // smallest stretch (exact for an isotropic wall, where S(C*) stays coaxial with C) and
+  // its width starts at the near-incompressible natural width, C*_mm = 1 / √C_tt.
+  const Eigen::Vector2d v = stretches.eigenvectors().col(0);
+  double theta = std::atan2(v(1), v(0));
+  double beta =
+      std::max(0.0, 1.0 / std::sqrt(stretches.eigenvalues()(1)) - stretches.eigenvalues()(0));
+  PlaneStressState s = taut;
+  bool converged = false;
+  // Outer Newton on θ for r2 = tᵀ S* m = 0, with β(θ) solved exactly inside: the total
+  // derivative dr2/dθ = ∂r2/∂θ - ∂r2/∂β (∂r1/∂θ) / (∂r1/∂β).
+  for (int it = 0; it < 30 && !converged; ++it) {
+    const WrinkleFrame w(theta);
+    if (!solve_wrinkle_width(material, C2, point, history_old, history_new, w, beta, s)) break;
+    const double r2 = w.t.dot(s.S * w.m);
+    if (std::abs(r2) <= round_off_stress(s)) {
+      converged = true;
+      break;
+    }
+    const Eigen::Matrix2d Jz = wrinkle_jacobian(w, s, beta);
+    const double slope = Jz(1, 1) - Jz(1, 0) * Jz(0, 1) / Jz(0, 0);
+    theta += std::clamp(-r2 / slope, -0.2, 0.2);
+  }
+  if (!converged) throw std::runtime_error("tension field: wrinkle iteration did not converge");
+
+  const WrinkleFrame w(theta);
+  if (!(beta > 0.0) || w.t.dot(s.S * w.t) <= 0.0) {
+    // Slack: no tension in any direction. The history is that of C, the state it was
+    // evaluated in by every other part (output, commit).
+    return slack_state(history_new != nullptr
+                           ? plane_stress(material, C2, point, taut.J2, history_old, history_new)
+                           : taut);
+  }
+  // 𝔻* = 𝔻 (I - Ew Jz⁻¹ P 𝔻): the fictitious strain follows C through β(C), θ(C).
+  const Eigen::Matrix<double, 3, 2> Ew = w.strain_derivatives(beta);
+  const Eigen::Matrix<double, 2, 3> P = w.projection();
+  const Eigen::Matrix2d Jz = wrinkle_jacobian(w, s, beta);
+  const Eigen::Matrix3d D = s.D - s.D * Ew * Jz.inverse() * P * s.D;
+  s.D = D;
+  s.wrinkling = Wrinkling::wrinkled;
+  return s;
+}
+
+}  // namespace vesica::simulate
