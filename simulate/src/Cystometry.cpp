@@ -181,6 +181,7 @@ class CystometryDriver {
       // The membrane has no contact: never let a step drain more than half of what is
       // left above 1 ml, so the wall cannot collapse through itself.
       if (run_.outflow() > 0.0) dt = std::min(dt, 0.5 * (V_before - V_floor) / run_.outflow());
+      const double dt_asked = dt;
       run_.step(dt, 0.0, true);
       record();
       const double Q = run_.outflow();
@@ -188,21 +189,27 @@ class CystometryDriver {
       if (flowing && Q < stop) break;
       if (run_.volume() < 2.0 * V_floor) break;
       // From the step actually taken: a cut-back shortened it.
-      dt = next_void_step(run_.time() - t_before, std::abs(V_before - run_.volume()));
+      const double dt_taken = run_.time() - t_before;
+      // A cut-back says the step size is at its limit here: grow again only slowly (a 2x
+      // growth right after it failed again on the crumpling wall, every other step).
+      max_growth_ = dt_taken < dt_asked * (1.0 - 1e-9) ? 1.0 : std::min(2.0, 1.25 * max_growth_);
+      dt = next_void_step(dt_taken, std::abs(V_before - run_.volume()));
     }
   }
 
   // The next voiding step from the one just taken (dt, draining dV): aim at a volume per
-  // step, growing at most 2x. A taut wall drains smoothly (2 Newton iterations a step with
-  // the predictor), so the aim is a quarter of the volume left above the stress-free
-  // reference, up to max_void_step_ml; near and below the reference the wall goes slack
-  // and wrinkles, every step is hard whatever its size, and 2 ml steps fail least.
+  // step, growing at most max_growth_ (2x, less after a cut-back). A taut wall drains
+  // smoothly (2 Newton iterations a step with the predictor), so the aim is a quarter of the
+  // volume left above the stress-free reference, up to max_void_step_ml; near and below the
+  // reference the wall goes slack and wrinkles, every step is hard whatever its size, and
+  // 2 ml steps fail least.
   double next_void_step(double dt, double dV) const {
     const double slack_aim = units::m3_from_ml(kSlackVoidStepMl);
     const double aim =
         std::clamp((run_.volume() - run_.initial_reference_volume()) / 4.0, slack_aim,
                    std::max(slack_aim, units::m3_from_ml(options_.max_void_step_ml)));
-    const double next = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, 2.0 * dt) : 2.0 * dt;
+    const double next =
+        dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, max_growth_ * dt) : max_growth_ * dt;
     return std::min(next, options_.max_void_step_s);
   }
 
@@ -234,6 +241,7 @@ class CystometryDriver {
   double mass_error_ = 0.0, max_stress_ = 0.0;
   double next_frame_ = 0.0, last_frame_ = -1.0;
   bool voiding_ = false;
+  double max_growth_ = 2.0;  // of the next voiding step (next_void_step)
   bool filled_ = false;
 };
 
