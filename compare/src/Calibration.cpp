@@ -97,7 +97,13 @@ class Residuals {
     simulate::CystometryProtocol protocol = pb_.protocol;
     for (std::size_t j = 0; j < p.size(); ++j) apply(pb_.parameters[j], p[j], material, protocol);
     ++simulations_;
-    const auto result = simulate::run_cystometry(pb_.wall, material, protocol, pb_.run);
+    // Every iteration a fresh tangent: the fit's finite-difference Jacobian needs curves
+    // converged far below the Newton tolerance (quadratic convergence overshoots it), not
+    // the chord iterations' just-below-tolerance ones, whose noise narrowed the confidence
+    // interval past the truth.
+    simulate::RunOptions run = pb_.run;
+    run.newton.reuse_tangent_ratio = 0.0;
+    const auto result = simulate::run_cystometry(pb_.wall, material, protocol, run);
     Eigen::VectorXd r = Eigen::VectorXd::Constant(values(), kFailedResidual);
     if (result.history.size() >= 2) {
       const auto a = analyse(recording_from_history(result.history));

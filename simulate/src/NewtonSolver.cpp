@@ -200,9 +200,13 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
     // Modified-Newton reuse: with the wall already in equilibrium (r_ok) only the cavity
     // equation (first iteration of a step) or the increment test (last one) is unmet, the
     // correction is small and the last tangent, from this solve or the converged state of
-    // the previous one, serves it as well as a new factorization would. Every other
-    // iteration factorizes its own tangent, which keeps the convergence quadratic.
-    const bool reuse = r_ok && reusable && eta == 0.0;
+    // the previous one, serves it as well as a new factorization would. Optionally also
+    // while the residual falls fast (chord iterations, options_.reuse_tangent_ratio).
+    // Every other iteration factorizes its own tangent (quadratic convergence).
+    const bool converging_fast =
+        it >= 1 &&
+        report.residual_norms[it] <= options_.reuse_tangent_ratio * report.residual_norms[it - 1];
+    const bool reuse = (r_ok || converging_fast) && reusable && eta == 0.0;
     for (int attempt = 0;; ++attempt) {
       if (!bordered_step(cavity, c, dc_dp, eta, reuse && attempt == 0, du, dp, report.failure))
         return report;

@@ -100,7 +100,13 @@ struct RunOptions {
   bool dynamic = false;
   double bossak_alpha = -0.1;
   ReferenceState reference = ReferenceState::Scale;
-  NewtonOptions newton;
+  // Chord iterations while the residual falls tenfold per iteration: 515 -> 407
+  // factorizations on the 2,312-triangle sphere, same results to the Newton tolerance.
+  NewtonOptions newton = [] {
+    NewtonOptions o;
+    o.reuse_tangent_ratio = 0.1;
+    return o;
+  }();
   // Called after every step with what is being done ("filling 120 ml") and the fraction
   // of the protocol done (filling up to 0.8, voiding after); the executable draws it.
   std::function<void(const std::string& step, double fraction)> on_progress;

@@ -47,6 +47,11 @@ struct NewtonOptions {
   double max_move_per_edge = 0.5;  // 0 = off
   // Halve a step of a wrinkling wall that would raise its residuals (NewtonSolver.cpp).
   bool line_search = true;
+  // Chord iterations: keep the last factorization while the residual falls at least this
+  // fast, |r|_k ≤ ratio |r|_k-1 (0 = a fresh tangent every iteration: quadratic
+  // convergence). A factorization of the indefinite K past the limit point (sparse LU) costs
+  // four assemblies, so a cystometry's time steps reuse it (RunOptions, ratio 0.1).
+  double reuse_tangent_ratio = 0.0;
 };
 
 struct NewtonReport {
