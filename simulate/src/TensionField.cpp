@@ -96,6 +96,11 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal(taut.S);
   if (principal.eigenvalues()(0) >= -round_off_stress(taut)) return taut;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> stretches(C2);
+  // Wrinkles need a direction shorter than the reference: a sheet stretched in every
+  // direction is wider than its natural width. A compressive principal stress there is the
+  // law's own softening (the Ogden volumetric term of a dilating wall with K/μ ≈ 5, past
+  // its pressure peak), and relaxing it would soften the wall further: the plain law stays.
+  if (stretches.eigenvalues()(0) >= 1.0) return taut;
   if (material.isotropic_elastic() && point.active_stress_pa == 0.0 &&
       stretches.eigenvalues()(1) <= 1.0)
     return slack_state(taut);  // shortened in every direction: no wrinkle carries tension

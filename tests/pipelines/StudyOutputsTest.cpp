@@ -38,7 +38,7 @@ std::string study_yaml(const std::string& stiff_mu_kpa) {
          "  simulate:\n"
          "    input: pouch.msh\n"
          "    output: sim\n"
-         "    params: {material: neo-hookean, mu_kpa: 1, k_kpa: 10, residual_ml: 250,\n"
+         "    params: {material: neo-hookean, mu_kpa: 1, residual_ml: 250,\n"
          "             start_ml: 250, capacity_ml: 500, fill_rate_ml_min: 50,\n"
          "             straining_kpa: 3.6, max_void_s: 5, no_series: true}\n"
          "study:\n"
