@@ -216,6 +216,7 @@ NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
       eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;
     }
     if (eta > 0.0) ++report.regularized_iterations;
+    eta_ = eta > 1e-9 * stiffness_scale ? 0.1 * eta : 0.0;
     if (options_.line_search && problem_.tension_field() && it > 0) {
       assembled = line_search(cavity, loads, du, dp, x);
       move *= line_search_step_;

@@ -138,12 +138,12 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
                            ? plane_stress(material, C2, point, taut.J2, history_old, history_new)
                            : taut);
   }
-  // 𝔻* = 𝔻 (I - Ew Jz⁻¹ P 𝔻): the fictitious strain follows C through β(C), θ(C).
+  // 𝔻* = 𝔻 (I - Ew Jz⁻¹ P 𝔻): the fictitious strain follows C through β(C), θ(C). Exact,
+  // so as symmetric as 𝔻 itself (the Hessian of W* for an elastic law).
   const Eigen::Matrix<double, 3, 2> Ew = w.strain_derivatives(beta);
   const Eigen::Matrix<double, 2, 3> P = w.projection();
   const Eigen::Matrix2d Jz = wrinkle_jacobian(w, s, beta);
-  const Eigen::Matrix3d D = s.D - s.D * Ew * Jz.inverse() * P * s.D;
-  s.D = D;
+  s.D = (s.D - s.D * Ew * Jz.inverse() * P * s.D).eval();
   s.wrinkling = Wrinkling::wrinkled;
   return s;
 }
