@@ -56,6 +56,14 @@ std::string step_failure_text(double t_s, double volume_m3, const std::string& r
   return s.str();
 }
 
+std::string no_voiding_note(const CystometryProtocol& protocol, double pves_pa) {
+  if (protocol.detrusor_kpa > 0.0 || protocol.straining_kpa > 0.0 ||
+      units::cmh2o_from_pa(pves_pa) >= protocol.p_open_cmh2o)
+    return "";
+  return "no voiding: Pves stays below the opening pressure without detrusor_kpa or "
+         "straining_kpa";
+}
+
 std::pair<std::string, double> protocol_progress(const HistoryRow& row,
                                                  const CystometryProtocol& protocol, bool voiding) {
   char step[64];

@@ -297,12 +297,9 @@ class FluidCystometryDriver {
   }
 
   void void_bladder() {
-    if (protocol_.detrusor_kpa <= 0.0 && protocol_.straining_kpa <= 0.0 &&
-        units::cmh2o_from_pa(pves()) < protocol_.p_open_cmh2o) {
-      result_.notes.push_back(
-          "no voiding: Pves stays below the opening pressure without detrusor_kpa or "
-          "straining_kpa");
-      vesica::log()->warn("{}", result_.notes.back());
+    if (const std::string why = no_voiding_note(protocol_, pves()); !why.empty()) {
+      result_.notes.push_back(why);
+      vesica::log()->warn("{}", why);
       return;
     }
     voiding_ = true;

@@ -23,6 +23,11 @@ void summarize_history(const std::vector<HistoryRow>& history, std::size_t capac
 // "step failed at t = .. s, V = .. ml: <reason>" (t in s, V in m³).
 std::string step_failure_text(double t_s, double volume_m3, const std::string& reason);
 
+// Why voiding cannot start at cavity pressure pves_pa, or "" when it can: without detrusor
+// contraction or straining nothing raises Pves to the opening pressure, and waiting
+// max_void_s would only add steps.
+std::string no_voiding_note(const CystometryProtocol& protocol, double pves_pa);
+
 // The progress line after a history row ("filling 120 ml") and the fraction of the
 // protocol done (filling up to 0.8, voiding after), for RunOptions::on_progress.
 std::pair<std::string, double> protocol_progress(const HistoryRow& row,
