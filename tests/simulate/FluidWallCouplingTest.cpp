@@ -93,6 +93,22 @@ struct CoupledBalloon {
     return p / static_cast<double>(wall.node_count());
   }
 
+  // One filling step of Q (m³/s) for dt through the inlet node, and the balloon after it
+  // against the analytic curve from its start volume V0.
+  struct FillingStep {
+    CouplingReport report;
+    double V = 0.0, lambda = 1.0, P = 0.0, exact = 0.0;
+  };
+  FillingStep fill(double Q, double dt, WallLoads& loads, double V0) {
+    FillingStep f;
+    f.report = coupling->step(dt, loads, inflow_at_node(wall, inlet, Q));
+    f.V = coupling->fluid_volume();
+    f.lambda = std::cbrt(f.V / V0);
+    f.P = mean_wall_pressure();
+    f.exact = balloon_pressure(f.lambda);
+    return f;
+  }
+
   double wall_kinetic_energy(double density) const {
     double energy = 0.0;
     for (std::size_t t = 0; t < wall.triangle_count(); ++t) {
@@ -119,12 +135,9 @@ TEST(FluidWallCoupling, SlowFillingFollowsTheBalloonAndConservesVolume) {
   WallLoads loads;
   double filled = 0.0;
   for (int s = 1; s <= 5; ++s) {
-    const CouplingReport r = b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, Q));
+    const auto [r, V, lambda, P, exact] = b.fill(Q, dt, loads, V0);
     ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
     filled += Q * dt;
-    const double V = b.coupling->fluid_volume();
-    const double lambda = std::cbrt(V / V0), P = b.mean_wall_pressure();
-    const double exact = balloon_pressure(lambda);
     std::printf(
         "[ coupling ] step %d: %d iterations, V = %.3f ml (V0 + ∫Q dt = %.3f ml, %+.1e), "
         "λ = %.4f, P = %.2f Pa (analytic %.2f, %+.2f %%)\n",
@@ -205,12 +218,9 @@ TEST(FluidWallCoupling, RemeshingMidFillingKeepsVolumeAndTheBalloonCurve) {
         ASSERT_EQ(b.coupling->positions()[i], wall_before[i]) << "wall node " << i;
       EXPECT_GT(quality(*b.coupling), 0.0);
     }
-    const CouplingReport r = b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, Q));
+    const auto [r, V, lambda, P, exact] = b.fill(Q, dt, loads, V0);
     ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
     filled += Q * dt;
-    const double V = b.coupling->fluid_volume();
-    const double lambda = std::cbrt(V / V0), P = b.mean_wall_pressure();
-    const double exact = balloon_pressure(lambda);
     std::printf(
         "[ coupling ] remeshed run step %d: %d iterations, V = %.4f ml (%+.1e), P = %.2f "
         "Pa (analytic %.2f, %+.2f %%)\n",
