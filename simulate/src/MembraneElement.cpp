@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "vesica/simulate/TensionField.h"
+
 namespace vesica::simulate {
 
 MembraneGeometry membrane_geometry(const std::array<Eigen::Vector3d, 3>& X, double H) {

@@ -7,7 +7,6 @@
 
 #include "vesica/simulate/Material.h"
 #include "vesica/simulate/PlaneStress.h"
-#include "vesica/simulate/TensionField.h"
 
 namespace vesica::simulate {
 
