@@ -10,7 +10,7 @@ SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
-  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
+  libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
   xvfb xauth chromium snakemake
 

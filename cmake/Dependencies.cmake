@@ -76,5 +76,14 @@ target_include_directories(vesica_suitesparse SYSTEM INTERFACE ${SUITESPARSE_INC
 target_link_libraries(vesica_suitesparse INTERFACE ${UMFPACK_LIBRARY} ${CHOLMOD_LIBRARY}
   ${AMD_LIBRARY} ${COLAMD_LIBRARY} ${SUITESPARSECONFIG_LIBRARY} Eigen3::Eigen)
 
+# MUMPS (sequential build): sparse LDLᵀ of the symmetric indefinite wall tangent past
+# the pressure limit point (simulate/src/SymmetricIndefiniteLdlt.cpp). No CMake config.
+find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
+find_library(DMUMPS_LIBRARY dmumps_seq REQUIRED)
+find_library(MUMPS_COMMON_LIBRARY mumps_common_seq REQUIRED)
+add_library(vesica_mumps INTERFACE)
+target_include_directories(vesica_mumps SYSTEM INTERFACE ${MUMPS_INCLUDE_DIR})
+target_link_libraries(vesica_mumps INTERFACE ${DMUMPS_LIBRARY} ${MUMPS_COMMON_LIBRARY})
+
 find_package(GTest REQUIRED)
 find_package(benchmark QUIET)

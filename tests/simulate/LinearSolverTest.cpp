@@ -1,5 +1,6 @@
-// LinearSolver: each factorization route (Cholesky for symmetric positive definite K, LU
-// otherwise) must reproduce a known solution x from b = K x, for the kinds of tangent
+// LinearSolver: each factorization route (Cholesky for symmetric positive definite K, LDLᵀ
+// for symmetric indefinite K, LU otherwise) must reproduce a known solution x from
+// b = K x, for the kinds of tangent
 // Newton meets: stable (SPD), past a limit point (symmetric indefinite) and with a
 // hydrostatic pressure gradient (non-symmetric). Dimensionless test matrices.
 #include <gtest/gtest.h>
@@ -52,21 +53,45 @@ TEST(LinearSolver, SymmetricPositiveDefiniteUsesCholesky) {
   EXPECT_LT(relative_error(solver.solve(K * X), X), 1e-10);
 }
 
-TEST(LinearSolver, SymmetricIndefiniteFallsBackToLu) {
-  // Eigenvalues 2 - 2 cos(kπ/301) - 0.5 change sign: indefinite, non-singular.
+TEST(LinearSolver, SymmetricIndefiniteUsesLdltAndCountsNegativeEigenvalues) {
+  // Eigenvalues 2 - 2 cos(kπ/301) - 0.5, k = 1..300: negative for cos(kπ/301) > 3/4,
+  // i.e. k ≤ 301 acos(3/4)/π = 69.2, so 69 of them; none is zero.
   const auto K = chain(300, 0.5, 0.0);
   const Eigen::MatrixXd X = known_solution(300);
   LinearSolver solver;
   ASSERT_TRUE(solver.factorize(K));
-  EXPECT_FALSE(solver.used_cholesky());
+  EXPECT_EQ(solver.method(), LinearSolver::Method::SymmetricIndefinite);
+  EXPECT_EQ(solver.negative_eigenvalues(), 69);
   EXPECT_LT(relative_error(solver.solve(K * X), X), 1e-10);
-  // The next factorizations of an SPD matrix with the same pattern stay exact.
+  // While K is known to be indefinite, the next one goes straight to LDLᵀ: an SPD matrix
+  // with the same pattern is solved exactly, its inertia (no negative eigenvalue) is seen,
+  // and from then on Cholesky is used again.
   const auto spd = chain(300, 0.0, 0.0);
-  for (int k = 0; k < 12; ++k) {
+  ASSERT_TRUE(solver.factorize(spd));
+  EXPECT_EQ(solver.method(), LinearSolver::Method::SymmetricIndefinite);
+  EXPECT_EQ(solver.negative_eigenvalues(), 0);
+  EXPECT_LT(relative_error(solver.solve(spd * X), X), 1e-10);
+  for (int k = 0; k < 3; ++k) {
     ASSERT_TRUE(solver.factorize(spd));
+    EXPECT_TRUE(solver.used_cholesky()) << "factorization " << k;
     EXPECT_LT(relative_error(solver.solve(spd * X), X), 1e-10) << "factorization " << k;
   }
-  EXPECT_TRUE(solver.used_cholesky());
+  // And an indefinite K after that falls back to LDLᵀ in the same call.
+  ASSERT_TRUE(solver.factorize(K));
+  EXPECT_EQ(solver.negative_eigenvalues(), 69);
+  EXPECT_LT(relative_error(solver.solve(K * X), X), 1e-10);
+}
+
+TEST(LinearSolver, InertiaOfAChainWithOneNegativeEigenvalue) {
+  // The smallest eigenvalue 2 - 2 cos(π/301) ≈ 1.09e-4 shifted below zero by 2e-4, the
+  // next one 4.36e-4 stays above: exactly one negative eigenvalue, as for a wall just
+  // past its pressure limit point under volume control.
+  const auto K = chain(300, 2e-4, 0.0);
+  const Eigen::MatrixXd X = known_solution(300);
+  LinearSolver solver;
+  ASSERT_TRUE(solver.factorize(K));
+  EXPECT_EQ(solver.negative_eigenvalues(), 1);
+  EXPECT_LT(relative_error(solver.solve(K * X), X), 1e-8);
 }
 
 TEST(LinearSolver, NonSymmetricUsesLu) {
@@ -74,7 +99,8 @@ TEST(LinearSolver, NonSymmetricUsesLu) {
   const Eigen::MatrixXd X = known_solution(300);
   LinearSolver solver;
   ASSERT_TRUE(solver.factorize(K));
-  EXPECT_FALSE(solver.used_cholesky());
+  EXPECT_EQ(solver.method(), LinearSolver::Method::LU);
+  EXPECT_EQ(solver.negative_eigenvalues(), -1);
   EXPECT_LT(relative_error(solver.solve(K * X), X), 1e-10);
 }
 
@@ -87,7 +113,7 @@ TEST(LinearSolver, AsymmetryAtRoundOffLevelStillCountsAsSymmetric) {
   EXPECT_TRUE(solver.used_cholesky());
   K.coeffRef(10, 11) *= 1.0 + 1e-9;  // a real asymmetry: LU
   ASSERT_TRUE(solver.factorize(K));
-  EXPECT_FALSE(solver.used_cholesky());
+  EXPECT_EQ(solver.method(), LinearSolver::Method::LU);
 }
 
 TEST(LinearSolver, SingularMatrixIsReported) {
@@ -96,5 +122,10 @@ TEST(LinearSolver, SingularMatrixIsReported) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
       if (it.row() == 20 || it.col() == 20) it.valueRef() = 0.0;
   LinearSolver solver;
-  EXPECT_FALSE(solver.factorize(K));
+  EXPECT_FALSE(solver.factorize(K));  // Cholesky fails, then LDLᵀ finds the null pivot
+  auto indefinite = chain(50, 0.5, 0.0);
+  for (int j = 0; j < indefinite.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(indefinite, j); it; ++it)
+      if (it.row() == 20 || it.col() == 20) it.valueRef() = 0.0;
+  EXPECT_FALSE(solver.factorize(indefinite));  // LDLᵀ directly
 }

@@ -3,10 +3,13 @@
 // pattern for the whole run, so the fill-reducing ordering and symbolic analysis are done
 // once. Each factorization takes the fastest exact route:
 //  - K symmetric (pressure without hydrostatic gradient) and positive definite: CHOLMOD
-//    supernodal Cholesky, about half the work of an LU;
-//  - otherwise (follower pressure with a gradient, or indefinite past the limit point):
-//    UMFPACK LU with partial pivoting.
-// Both are exact factorizations of K, so Newton's quadratic convergence is untouched.
+//    supernodal Cholesky;
+//  - K symmetric but indefinite (volume control past the pressure limit point, a follower
+//    pressure on a slack wall): MUMPS LDLᵀ with threshold pivoting, as fast as the
+//    Cholesky (SymmetricIndefiniteLdlt.h). Its inertia says when K is definite again, and
+//    the next factorization returns to Cholesky;
+//  - otherwise (follower pressure with a gradient): UMFPACK LU with partial pivoting.
+// All are exact factorizations of K, so Newton's quadratic convergence is untouched.
 // Dense kernels run in the system BLAS (OpenBLAS when installed; see docs/simulate.md).
 #include <memory>
 #include <vector>
@@ -29,8 +32,14 @@ class LinearSolver {
   bool factorized() const { return factorized_; }
   // X = K⁻¹ B for the last factorized K; B has one column per right-hand side.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& B) const;
-  // Whether the last factorization was the Cholesky one (for tests and logs).
-  bool used_cholesky() const { return used_cholesky_; }
+  // Which factorization the last call used (for tests and logs).
+  enum class Method { None, Cholesky, SymmetricIndefinite, LU };
+  Method method() const { return method_; }
+  bool used_cholesky() const { return method_ == Method::Cholesky; }
+  // K's number of negative eigenvalues when the last factorization tells it (Cholesky: 0,
+  // LDLᵀ: its negative pivots), else -1 (LU). Under volume control it counts the modes
+  // past their limit point.
+  int negative_eigenvalues() const;
 
  private:
   bool is_symmetric(const Eigen::SparseMatrix<double>& K);
@@ -38,9 +47,12 @@ class LinearSolver {
   struct Backends;
   std::unique_ptr<Backends> backends_;
   std::vector<int> transpose_slot_;  // entry k = (i, j) → index of (j, i)
-  bool factorized_ = false, used_cholesky_ = false;
-  int cholesky_skips_ = 0;  // LU-only factorizations left after K was found indefinite
-  int last_skips_ = 0;      // the last such count (grows while K stays indefinite)
+  bool factorized_ = false;
+  Method method_ = Method::None;
+  // Whether the next symmetric K is tried by Cholesky first: until K is found indefinite,
+  // and again once the LDLᵀ finds no negative pivot (a failed Cholesky costs up to a
+  // whole factorization, so it is not retried while K is known to be indefinite).
+  bool try_cholesky_ = true;
 };
 
 }  // namespace vesica::simulate
