@@ -81,9 +81,7 @@ void SymmetricIndefiniteLdlt::analyze(const Eigen::SparseMatrix<double>& K) {
 }
 
 bool SymmetricIndefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& K) {
-  if (!analyzed_ || values_.size() != lower_slot_.size() ||
-      mumps_->id.n != static_cast<MUMPS_INT>(K.rows()))
-    analyze(K);
+  if (!analyzed_) analyze(K);
   if (!analyzed_) return false;
   const double* v = K.valuePtr();
   for (std::size_t k = 0; k < lower_slot_.size(); ++k) values_[k] = v[lower_slot_[k]];

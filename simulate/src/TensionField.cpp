@@ -145,10 +145,10 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   // 𝔻* = 𝔻 (I - Ew Jz⁻¹ P 𝔻): the fictitious strain follows C through β(C), θ(C). Exact,
   // so as symmetric as 𝔻 itself (the Hessian of W* for an elastic law) — but only at the
   // exact wrinkle solution: Jz⁻¹ amplifies the round-off of a narrow wrinkle (small β)
-  // into an asymmetry of ~1e-12 of K, and a single such element made the whole tangent
-  // fail the symmetry test and go to the LU, at three times the cost of LDLᵀ (a third of
-  // the slack collapse's factorizations). For a symmetric 𝔻 the correction's asymmetric
-  // part is that round-off, so it is dropped.
+  // beyond LinearSolver's 1e-14 symmetry test, and a single such element sent the whole
+  // tangent to the LU, at three times the cost of LDLᵀ (16,928-triangle sphere: 151 →
+  // 118 s without it, no LU left). For a symmetric 𝔻 the correction's asymmetric part is
+  // that round-off, so it is dropped.
   const Eigen::Matrix<double, 3, 2> Ew = w.strain_derivatives(beta);
   const Eigen::Matrix<double, 2, 3> P = w.projection();
   const Eigen::Matrix2d Jz = wrinkle_jacobian(w, s, beta);

@@ -5,9 +5,9 @@
 //  - K symmetric (pressure without hydrostatic gradient) and positive definite: CHOLMOD
 //    supernodal Cholesky;
 //  - K symmetric but indefinite (volume control past the pressure limit point, a follower
-//    pressure on a slack wall): MUMPS LDLᵀ with threshold pivoting, as fast as the
-//    Cholesky (SymmetricIndefiniteLdlt.h). Its inertia says when K is definite again, and
-//    the next factorization returns to Cholesky;
+//    pressure on a slack wall): MUMPS LDLᵀ with threshold pivoting, a third of the cost
+//    of an LU and close to a Cholesky's (SymmetricIndefiniteLdlt.h). Its inertia says when
+//    K is definite again, and the next factorization returns to Cholesky;
 //  - otherwise (follower pressure with a gradient): UMFPACK LU with partial pivoting.
 // All are exact factorizations of K, so Newton's quadratic convergence is untouched.
 // Dense kernels run in the system BLAS (OpenBLAS when installed; see docs/simulate.md).
