@@ -10,6 +10,17 @@ constexpr int kPlane[3] = {0, 1, 3};  // Voigt positions of 11, 22, 12
 constexpr int k33 = 2;
 }  // namespace
 
+// S33 is the small difference of volumetric and isochoric terms of size ≈ C33 dS33/dC33
+// (≈ K): its round-off is a few ulps of that, far above 1e-13 of the in-plane stress of
+// a nearly incompressible wall. Without this floor the iteration ran on until its step
+// test stopped it, 7 material evaluations per call instead of 3.
+bool plane_stress_converged(const Eigen::Matrix3d& S, const Voigt6& D, double c33,
+                            double stress_scale) {
+  if (stress_scale < 0.0) stress_scale = std::abs(S(0, 0)) + std::abs(S(1, 1)) + std::abs(S(0, 1));
+  const double round_off = 8.0 * DBL_EPSILON * 0.5 * std::abs(D(k33, k33)) * c33;
+  return std::abs(S(k33, k33)) <= std::max(1e-13 * stress_scale, round_off);
+}
+
 // S33(C33) → -∞ as C33 → 0 (the volumetric term) and is positive for a large C33, so
 // a root is bracketed; Newton steps are taken inside the bracket and replaced by
 // bisection when they leave it (the Ogden term makes S33 non-monotonic far from the
@@ -31,14 +42,7 @@ PlaneStressState plane_stress(const Material& material, const Eigen::Matrix2d& C
   double c33 = (J2_guess > 0.0 ? J2_guess : 1.0) / det2;
   double f = S33(c33);
   const double stress_scale = std::abs(S(0, 0)) + std::abs(S(1, 1)) + std::abs(S(0, 1));
-  // S33 is the small difference of volumetric and isochoric terms of size ≈ C33 dS33/dC33
-  // (≈ K): its round-off is a few ulps of that, far above 1e-13 of the in-plane stress of
-  // a nearly incompressible wall. Without this floor the iteration ran on until its step
-  // test stopped it, 7 material evaluations per call instead of 3.
-  auto converged = [&] {
-    const double round_off = 8.0 * DBL_EPSILON * 0.5 * std::abs(D(k33, k33)) * c33;
-    return std::abs(f) <= std::max(1e-13 * stress_scale, round_off);
-  };
+  auto converged = [&] { return plane_stress_converged(S, D, c33, stress_scale); };
   if (!converged()) {
     double lo = 0.0, hi = INFINITY;
     (f > 0.0 ? hi : lo) = c33;
@@ -57,6 +61,11 @@ PlaneStressState plane_stress(const Material& material, const Eigen::Matrix2d& C
     }
     if (!done) throw std::runtime_error("plane stress: thickness iteration did not converge");
   }
+  return condensed_state(S, D, c33, det2);
+}
+
+PlaneStressState condensed_state(const Eigen::Matrix3d& S, const Voigt6& D, double c33,
+                                 double det2) {
   PlaneStressState state;
   state.C33 = c33;
   state.J2 = c33 * det2;

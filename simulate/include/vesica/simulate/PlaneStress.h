@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "vesica/simulate/Material.h"
+#include "vesica/simulate/Voigt.h"
 
 namespace vesica::simulate {
 
@@ -31,5 +32,15 @@ struct PlaneStressState {
 PlaneStressState plane_stress(const Material& material, const Eigen::Matrix2d& C2,
                               const MaterialPoint& point, double J2_guess,
                               const double* history_old, double* history_new);
+
+// Whether S33 of a 3-D evaluation S, D at thickness stretch² c33 is zero: below 1e-13 of
+// the in-plane stress scale (|S11| + |S22| + |S12| by default) or of its own round-off.
+bool plane_stress_converged(const Eigen::Matrix3d& S, const Voigt6& D, double c33,
+                            double stress_scale = -1.0);
+
+// The plane-stress state of a 3-D evaluation S, D at C = [C2 0; 0 c33] with S33 = 0
+// (det2 = det C2): the in-plane stress and the tangent condensed to the plane.
+PlaneStressState condensed_state(const Eigen::Matrix3d& S, const Voigt6& D, double c33,
+                                 double det2);
 
 }  // namespace vesica::simulate
