@@ -15,8 +15,13 @@ IsochoricInvariant isochoric_invariant(const Kinematics& k, const Eigen::Matrix3
   IsochoricInvariant inv;
   inv.value = k.J_m23 * (k.C.cwiseProduct(M)).sum();
   inv.d_dC = k.J_m23 * M - inv.value / 3.0 * k.C_inv;
-  inv.d2_dC2 = -(outer(inv.d_dC, k.C_inv) + outer(k.C_inv, inv.d_dC)) / 3.0 -
-               inv.value / 9.0 * outer(k.C_inv, k.C_inv) + inv.value / 3.0 * odot(k.C_inv);
+  // The three outer products as one symmetric pair: with a = dĪ/3 + Ī C⁻¹/18,
+  // (dĪ ⊗ C⁻¹ + C⁻¹ ⊗ dĪ)/3 + Ī/9 C⁻¹ ⊗ C⁻¹ = a ⊗ C⁻¹ + C⁻¹ ⊗ a.
+  const Vector6 c = to_voigt(k.C_inv);
+  const Vector6 a = to_voigt(inv.d_dC) / 3.0 + inv.value / 18.0 * c;
+  inv.d2_dC2.noalias() = -(a * c.transpose());
+  inv.d2_dC2.noalias() -= c * a.transpose();
+  inv.d2_dC2 += inv.value / 3.0 * odot(k.C_inv);
   return inv;
 }
 
