@@ -1,6 +1,7 @@
 #include "vesica/simulate/MembraneProblem.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <mutex>
 #include <stdexcept>
@@ -104,6 +105,10 @@ void MembraneProblem::build_pattern() {
   for (std::size_t d = 0; d < free_count_; ++d) diagonal_slot_[d] = slot_of(d, d);
 }
 
+// Elements per chunk of the parallel element loop: small enough to balance the threads,
+// large enough that the shared counter is touched rarely.
+constexpr std::size_t kChunk = 256;
+
 template <class Body>
 void MembraneProblem::for_each_element(const Body& body) const {
   const std::size_t ne = wall_.triangle_count();
@@ -120,11 +125,18 @@ void MembraneProblem::for_each_element(const Body& body) const {
   if (threads_ == 1 || ne < 200) {
     run(0, ne);
   } else {
+    // Chunks handed out in turn, not one contiguous share per thread: a wrinkled element
+    // costs about twice a taut or slack one (it also solves for its wrinkles), and the
+    // wrinkles gather in one region of the wall, which is one thread's share of the
+    // numbering.
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (std::size_t begin; (begin = next.fetch_add(kChunk)) < ne;)
+        run(begin, std::min(ne, begin + kChunk));
+    };
     std::vector<std::thread> pool;
-    const std::size_t chunk = (ne + threads_ - 1) / threads_;
-    for (int k = 1; k < threads_; ++k)
-      pool.emplace_back(run, std::min(ne, k * chunk), std::min(ne, (k + 1) * chunk));
-    run(0, std::min(ne, chunk));
+    for (int k = 1; k < threads_; ++k) pool.emplace_back(worker);
+    worker();
     for (auto& th : pool) th.join();
   }
   if (error) std::rethrow_exception(error);
