@@ -181,11 +181,12 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
   out.volume = 0.0;
   for (std::size_t e = 0; e < wall_.triangle_count(); ++e) {
     const auto& t = wall_.triangles[e];
-    for (int a = 0; a < 3; ++a) {
-      f_int.segment<3>(3 * t[a]) += element_f_[e].segment<3>(3 * a);
-      f_ext.segment<3>(3 * t[a]) += element_fp_[e].segment<3>(3 * a);
-      dfdp0.segment<3>(3 * t[a]) += element_dfdp0_[e].segment<3>(3 * a);
-      dV.segment<3>(3 * t[a]) += element_dV_[e].segment<3>(3 * a);
+    for (Eigen::Index a = 0; a < 3; ++a) {
+      const Eigen::Index node = 3 * Eigen::Index{t[a]}, local = 3 * a;
+      f_int.segment<3>(node) += element_f_[e].segment<3>(local);
+      f_ext.segment<3>(node) += element_fp_[e].segment<3>(local);
+      dfdp0.segment<3>(node) += element_dfdp0_[e].segment<3>(local);
+      dV.segment<3>(node) += element_dV_[e].segment<3>(local);
     }
     out.volume += element_V_[e];
   }

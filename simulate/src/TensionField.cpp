@@ -159,8 +159,7 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
     slack.C33 = slack.J2 / C2.determinant();
     return slack_state(slack);
   }
-  const PlaneStressState taut =
-      plane_stress(material, C2, point, J2_guess, history_old, history_new);
+  PlaneStressState taut = plane_stress(material, C2, point, J2_guess, history_old, history_new);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal;
   principal.computeDirect(taut.S, Eigen::EigenvaluesOnly);
   if (principal.eigenvalues()(0) >= -round_off_stress(taut)) return taut;
