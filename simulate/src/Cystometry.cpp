@@ -26,8 +26,8 @@ namespace {
 constexpr double kMaxMeanStretch = 4.0;
 // Volume per voiding step once the wall is slack (see next_void_step). 1 ml: on the
 // 16,928-triangle sphere 2 ml steps failed and were halved often enough to cost more
-// (83 against 72 s); on 2,312 triangles 2 ml was cheaper (3.2 against 4.4 s, both far
-// below their target).
+// (83 against 72 s; with the tolerances of RunOptions::newton 71 against about 60 s);
+// on 2,312 triangles 2 ml was cheaper (3.2 against 4.4 s then, both far below target).
 constexpr double kSlackVoidStepMl = 1.0;
 
 void validate(const CystometryProtocol& p, double reference_ml) {

@@ -32,6 +32,14 @@ Eigen::SparseMatrix<double> chain(int n, double shift, double skew) {
 }
 
 // A known solution with two columns (two right-hand sides, as Newton's bordered solve).
+// K with row and column i set to zero (entries kept): singular, same pattern.
+Eigen::SparseMatrix<double> with_zero_row_and_column(Eigen::SparseMatrix<double> K, int i) {
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
+      if (it.row() == i || it.col() == i) it.valueRef() = 0.0;
+  return K;
+}
+
 Eigen::MatrixXd known_solution(int n) {
   Eigen::MatrixXd X(n, 2);
   for (int i = 0; i < n; ++i) X(i, 0) = std::sin(0.1 * i) + 1.0, X(i, 1) = 0.01 * i * i - 3.0;
@@ -117,15 +125,9 @@ TEST(LinearSolver, AsymmetryAtRoundOffLevelStillCountsAsSymmetric) {
 }
 
 TEST(LinearSolver, SingularMatrixIsReported) {
-  auto K = chain(50, 0.0, 0.0);
-  for (int j = 0; j < K.outerSize(); ++j)  // row and column 20 zero
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
-      if (it.row() == 20 || it.col() == 20) it.valueRef() = 0.0;
   LinearSolver solver;
-  EXPECT_FALSE(solver.factorize(K));  // Cholesky fails, then LDLᵀ finds the null pivot
-  auto indefinite = chain(50, 0.5, 0.0);
-  for (int j = 0; j < indefinite.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(indefinite, j); it; ++it)
-      if (it.row() == 20 || it.col() == 20) it.valueRef() = 0.0;
-  EXPECT_FALSE(solver.factorize(indefinite));  // LDLᵀ directly
+  // Cholesky fails, then LDLᵀ finds the null pivot.
+  EXPECT_FALSE(solver.factorize(with_zero_row_and_column(chain(50, 0.0, 0.0), 20)));
+  // Known indefinite now: LDLᵀ directly.
+  EXPECT_FALSE(solver.factorize(with_zero_row_and_column(chain(50, 0.5, 0.0), 20)));
 }
