@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica;

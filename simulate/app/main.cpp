@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "fluid/FluidCystometry.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
@@ -15,7 +16,6 @@
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
 #include "vesica/simulate/MeshReader.h"
-#include "vesica/simulate/fluid/FluidCystometry.h"
 
 namespace fs = std::filesystem;
 using namespace vesica;

@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/simulate/BossakNewmark.h"
+#include "BossakNewmark.h"
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 
 namespace vesica::simulate {
 

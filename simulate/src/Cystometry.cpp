@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "CavityRun.h"
+#include "PrestressReference.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -16,7 +17,6 @@
 #include "vesica/simulate/CystometrySummary.h"
 #include "vesica/simulate/MaterialRegistry.h"
 #include "vesica/simulate/MeshReader.h"
-#include "vesica/simulate/PrestressReference.h"
 #include "vesica/simulate/VtuSeriesWriter.h"
 
 namespace vesica::simulate {

@@ -1,4 +1,4 @@
-#include "vesica/simulate/LinearSolver.h"
+#include "LinearSolver.h"
 
 #include "SymmetricIndefiniteLdlt.h"
 

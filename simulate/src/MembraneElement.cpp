@@ -1,9 +1,9 @@
-#include "vesica/simulate/MembraneElement.h"
+#include "MembraneElement.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "vesica/simulate/TensionField.h"
+#include "TensionField.h"
 
 namespace vesica::simulate {
 

@@ -1,10 +1,10 @@
-#include "vesica/simulate/NewtonSolver.h"
+#include "NewtonSolver.h"
 
 #include <cmath>
 #include <stdexcept>
 
+#include "LinearSolver.h"
 #include "vesica/core/Log.h"
-#include "vesica/simulate/LinearSolver.h"
 
 namespace vesica::simulate {
 

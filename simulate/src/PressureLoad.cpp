@@ -1,4 +1,4 @@
-#include "vesica/simulate/PressureLoad.h"
+#include "PressureLoad.h"
 
 namespace vesica::simulate {
 namespace {

@@ -1,4 +1,4 @@
-#include "vesica/simulate/TensionField.h"
+#include "TensionField.h"
 
 #include <algorithm>
 #include <cmath>

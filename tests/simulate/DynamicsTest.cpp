@@ -9,10 +9,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "vesica/simulate/BossakNewmark.h"
+#include "BossakNewmark.h"
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica::simulate;

@@ -16,12 +16,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "MembraneProblem.h"
+#include "fluid/FluidWallCoupling.h"
+#include "fluid/TetQuality.h"
 #include "vesica/mesh/CavityMesher.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
 #include "vesica/simulate/SphereMesh.h"
-#include "vesica/simulate/fluid/FluidWallCoupling.h"
-#include "vesica/simulate/fluid/TetQuality.h"
 
 using namespace vesica::simulate;
 using namespace vesica::simulate::fluid;

@@ -15,13 +15,13 @@
 #include <numeric>
 
 #include "TestData.h"
-#include "vesica/simulate/fluid/BoundaryFaces.h"
-#include "vesica/simulate/fluid/FluidNewton.h"
-#include "vesica/simulate/fluid/FluidProblem.h"
+#include "fluid/BoundaryFaces.h"
+#include "fluid/FluidNewton.h"
+#include "fluid/FluidProblem.h"
+#include "fluid/InflowPatch.h"
+#include "fluid/MeshMotion.h"
+#include "fluid/StabilizedTet.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
-#include "vesica/simulate/fluid/InflowPatch.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
-#include "vesica/simulate/fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
 namespace {

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 
 using namespace vesica::simulate;
 

@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/FluidCystometry.h"
+#include "fluid/FluidCystometry.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "../CavityRun.h"
+#include "CavityRun.h"
+#include "fluid/BoundaryFaces.h"
+#include "fluid/MeshMotion.h"
+#include "fluid/TetQuality.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -18,10 +21,7 @@
 #include "vesica/simulate/CystometrySummary.h"
 #include "vesica/simulate/MaterialRegistry.h"
 #include "vesica/simulate/VtuSeriesWriter.h"
-#include "vesica/simulate/fluid/BoundaryFaces.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
-#include "vesica/simulate/fluid/TetQuality.h"
 
 namespace vesica::simulate::fluid {
 namespace {

@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/FluidNewton.h"
+#include "fluid/FluidNewton.h"
 
 #include <chrono>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "vesica/simulate/fluid/FluidProblem.h"
+#include "fluid/FluidProblem.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "vesica/simulate/fluid/StabilizedTet.h"
+#include "fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
 

@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/FluidWallCoupling.h"
+#include "fluid/FluidWallCoupling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,14 +10,14 @@
 #include <Eigen/Sparse>
 #include <Eigen/UmfPackSupport>
 
+#include "PressureLoad.h"
+#include "fluid/CavityTetrahedra.h"
+#include "fluid/FluidProblem.h"
+#include "fluid/MeshMotion.h"
+#include "fluid/MeshTransfer.h"
+#include "fluid/StabilizedTet.h"
+#include "fluid/TetQuality.h"
 #include "vesica/core/Log.h"
-#include "vesica/simulate/PressureLoad.h"
-#include "vesica/simulate/fluid/CavityTetrahedra.h"
-#include "vesica/simulate/fluid/FluidProblem.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
-#include "vesica/simulate/fluid/MeshTransfer.h"
-#include "vesica/simulate/fluid/StabilizedTet.h"
-#include "vesica/simulate/fluid/TetQuality.h"
 
 namespace vesica::simulate::fluid {
 

@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/InflowPatch.h"
+#include "fluid/InflowPatch.h"
 
 #include <map>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/MeshTransfer.h"
+#include "fluid/MeshTransfer.h"
 
 #include <algorithm>
 #include <cmath>

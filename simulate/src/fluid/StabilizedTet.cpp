@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/StabilizedTet.h"
+#include "fluid/StabilizedTet.h"
 
 #include <cmath>
 #include <stdexcept>

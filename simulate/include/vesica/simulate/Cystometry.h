@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vesica/simulate/Material.h"
-#include "vesica/simulate/NewtonSolver.h"
+#include "vesica/simulate/NewtonOptions.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {

@@ -21,11 +21,11 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/PressureLoad.h"
-#include "vesica/simulate/fluid/FluidMesh.h"
-#include "vesica/simulate/fluid/FluidModel.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
+#include "MembraneProblem.h"
+#include "PressureLoad.h"
+#include "fluid/FluidBoundary.h"
+#include "fluid/FluidModel.h"
+#include "fluid/MeshMotion.h"
 
 namespace vesica::simulate::fluid {
 

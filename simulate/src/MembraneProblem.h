@@ -10,10 +10,10 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "vesica/simulate/BossakNewmark.h"
+#include "BossakNewmark.h"
+#include "MembraneElement.h"
+#include "PressureLoad.h"
 #include "vesica/simulate/Material.h"
-#include "vesica/simulate/MembraneElement.h"
-#include "vesica/simulate/PressureLoad.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {

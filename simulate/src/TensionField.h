@@ -14,8 +14,8 @@
 // material of the registry (it only calls plane_stress()).
 #include <Eigen/Dense>
 
+#include "PlaneStress.h"
 #include "vesica/simulate/Material.h"
-#include "vesica/simulate/PlaneStress.h"
 
 namespace vesica::simulate {
 

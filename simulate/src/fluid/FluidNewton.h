@@ -7,7 +7,7 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/fluid/FluidProblem.h"
+#include "fluid/FluidProblem.h"
 
 namespace vesica::simulate::fluid {
 

@@ -10,9 +10,9 @@
 #include <functional>
 #include <string>
 
+#include "fluid/FluidWallCoupling.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
-#include "vesica/simulate/fluid/FluidWallCoupling.h"
 
 namespace vesica::simulate::fluid {
 
