@@ -23,6 +23,8 @@ CavityRun::CavityRun(const WallModel& wall, const Material& material,
                      const CystometryProtocol& protocol, const RunOptions& options)
     : wall_(wall),
       protocol_(protocol),
+      urethra_(UrethraLaw::from_clinical_units(protocol.p_open_cmh2o, protocol.r1_cmh2o_s_per_ml,
+                                               protocol.r2_cmh2o_s2_per_ml2)),
       problem_(wall, material, options.threads),
       solver_(problem_, options.newton),
       x_(wall.nodes) {
@@ -53,19 +55,6 @@ void CavityRun::set_time_loads(double t) {
   loads_.active_stress_pa = active * units::pa_from_kpa(protocol_.detrusor_kpa);
 }
 
-double CavityRun::outlet_flow(double p0, double& dQ_dp0) const {
-  // p - p_open = R1 Q + R2 Q² in cmH2O and ml/s; zero flow below the opening pressure.
-  const double dp = units::cmh2o_from_pa(p0) - protocol_.p_open_cmh2o;
-  if (dp <= 0.0) {
-    dQ_dp0 = 0.0;
-    return 0.0;
-  }
-  const double R1 = std::max(protocol_.r1_cmh2o_s_per_ml, 1e-6), R2 = protocol_.r2_cmh2o_s2_per_ml2;
-  const double Q = R2 > 0.0 ? 2.0 * dp / (R1 + std::sqrt(R1 * R1 + 4.0 * R2 * dp)) : dp / R1;
-  dQ_dp0 = units::m3s_from_mls(1.0 / (R1 + 2.0 * R2 * Q)) / units::kPaPerCmH2O;
-  return units::m3s_from_mls(Q);
-}
-
 bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_flow,
                         int& iterations) {
   const std::vector<Eigen::Vector3d> x_saved = x_;
@@ -86,9 +75,8 @@ bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_
   cavity.volume_base_m3 = V_target_no_flow - (outlet ? (1.0 - theta) * dt * q_out_ : 0.0);
   if (outlet)
     cavity.outflow = [this, dt](double p0, double& d) {
-      const double Q = outlet_flow(p0, d);
-      d *= theta * dt;
-      return theta * dt * Q;
+      d = urethra_.flow_derivative(p0) * (theta * dt);
+      return theta * dt * urethra_.flow(p0);
     };
   (void)q_in;
   const NewtonReport report = solver_.solve(cavity, loads_, x_);
@@ -105,8 +93,7 @@ bool CavityRun::attempt(double dt, double q_in, bool outlet, double V_target_no_
   x_before_ = x_saved;
   p_before_ = p_saved;
   dt_before_ = dt;
-  double dQ = 0.0;
-  const double q_new = outlet ? outlet_flow(loads_.inside.p0, dQ) : 0.0;
+  const double q_new = outlet ? urethra_.flow(loads_.inside.p0) : 0.0;
   if (outlet) voided_ += dt * (theta * q_new + (1.0 - theta) * q_out_);
   q_out_ = q_new;
   volume_ = solver_.assembly().volume;
@@ -154,8 +141,7 @@ void CavityRun::start_clock() {
 
 void CavityRun::begin_voiding() {
   t_void_ = t_;
-  double d = 0.0;
-  q_out_ = outlet_flow(loads_.inside.p0, d);  // the outlet opens on the current pressure
+  q_out_ = urethra_.flow(loads_.inside.p0);  // the outlet opens on the current pressure
 }
 
 int CavityRun::step(double dt, double q_in, bool outlet) {

@@ -13,6 +13,7 @@
 #include "BossakNewmark.h"
 #include "MembraneProblem.h"
 #include "NewtonSolver.h"
+#include "UrethraLaw.h"
 #include "vesica/simulate/Cystometry.h"
 
 namespace vesica::simulate {
@@ -56,10 +57,10 @@ class CavityRun {
   bool attempt(double dt, double q_in, bool outlet, double V_target_no_flow, int& iterations);
   void predict(double dt);
   void set_time_loads(double t);
-  double outlet_flow(double p0, double& dQ_dp0) const;
 
   const WallModel& wall_;
   const CystometryProtocol& protocol_;
+  UrethraLaw urethra_;
   MembraneProblem problem_;
   NewtonSolver solver_;
   WallLoads loads_;

@@ -416,7 +416,7 @@ TEST(NavierStokes, UrethraOutletFollowsItsLaw) {
   for (const auto& c : plug_inflow(faces, tube.inlet, tube.on_side, q_in))
     boundary.velocity.push_back(c);
   boundary.outlets.push_back(
-      {tube.outlet, 20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml)});
+      {tube.outlet, UrethraLaw(20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml))});
   FluidProperties urine;
   urine.gravity.setZero();
   const FluidProblem problem(mesh, boundary, urine);
@@ -458,7 +458,8 @@ TEST(NavierStokes, OutletUnderGravityStaysHydrostatic) {
   FluidBoundary boundary;
   for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i)
     if (on_wall[i]) boundary.velocity.push_back({i, {true, true, true}, Eigen::Vector3d::Zero()});
-  boundary.outlets.push_back({outlet, 20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml)});
+  boundary.outlets.push_back(
+      {outlet, UrethraLaw(20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml))});
   const FluidProperties urine;
   const FluidProblem problem(mesh, boundary, urine);
   FluidNewton newton(problem);

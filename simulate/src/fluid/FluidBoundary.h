@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include "UrethraLaw.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
 
 namespace vesica::simulate::fluid {
@@ -23,17 +24,15 @@ struct PressureFace {
   double pressure = 0.0;       // p̄, Pa
 };
 
-// The open urethra outlet (physics.md §5): traction −p n on the outlet faces with
+// The open urethra outlet (docs/physics.md §5): traction −p n on the outlet faces with
 // p = p_out + ρ g·(x − x_ref) (p_out at the patch centroid x_ref, hydrostatic over the
 // patch), p_out one extra unknown (the last dof of the state) tied to the outflow
-// Q = ∫ u·n dA by
-// p_out − p_open = R1 Q + R2 Q|Q|. While the urethra is closed (filling, or p below
-// p_open) the caller treats the outlet faces as wall instead.
+// Q = ∫ u·n dA by the law in pressure form, p_out − p_open = R1 Q + R2 Q|Q|
+// (UrethraLaw::pressure_drop). While the urethra is closed (filling, or p below p_open)
+// the caller treats the outlet faces as wall instead.
 struct UrethraOutlet {
   std::vector<std::array<int, 3>> faces;
-  double opening_pressure = 0.0;  // p_open, Pa
-  double r1 = 0.0;                // R1, Pa·s/m³ (> 0)
-  double r2 = 0.0;                // R2, Pa·s²/m⁶
+  UrethraLaw law;
 };
 
 struct FluidBoundary {

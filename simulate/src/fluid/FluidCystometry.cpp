@@ -339,14 +339,9 @@ class FluidCystometryDriver {
   }
 
   void open_urethra() {
-    UrethraOutlet law;
-    law.faces = outlet_faces_;
-    law.opening_pressure = units::pa_from_cmh2o(protocol_.p_open_cmh2o);
-    // cmH2O·s/ml → Pa·s/m³ and cmH2O·s²/ml² → Pa·s²/m⁶.
-    law.r1 = std::max(protocol_.r1_cmh2o_s_per_ml, 1e-6) * units::kPaPerCmH2O / units::kM3PerMl;
-    law.r2 =
-        protocol_.r2_cmh2o_s2_per_ml2 * units::kPaPerCmH2O / (units::kM3PerMl * units::kM3PerMl);
-    coupling_->open_outlet(law);
+    coupling_->open_outlet({outlet_faces_, UrethraLaw::from_clinical_units(
+                                               protocol_.p_open_cmh2o, protocol_.r1_cmh2o_s_per_ml,
+                                               protocol_.r2_cmh2o_s2_per_ml2)});
     vesica::log()->debug("level 2: urethra open at t = {} s, Pves = {} cmH2O", t_,
                          units::cmh2o_from_pa(pves()));
   }

@@ -125,8 +125,8 @@ void FluidWallCoupling::build_unknowns() {
   // With the urethra open, the urine moves freely through the outlet's inner nodes (the
   // wall holds them, so they have no wall dofs): their velocities are urine unknowns.
   std::vector<bool> free_urine(n, false);
-  if (outlet_open_)
-    for (int v : inner_nodes(wall_.wall(), outlet_.faces)) free_urine[v] = true;
+  if (outlet_open())
+    for (int v : inner_nodes(wall_.wall(), outlet_->faces)) free_urine[v] = true;
   u.wall_free = static_cast<int>(wall_.free_dof_count());
   u.index.assign(u.problem.dof_count(), -1);
   u.is_wall_velocity.assign(u.problem.dof_count(), false);
@@ -515,7 +515,7 @@ Eigen::VectorXd FluidWallCoupling::full_state() const {
   Eigen::VectorXd full = state_;
   const HydrostaticPressure h = hydrostatic_part();
   for (std::size_t i = 0; i < x_.size(); ++i) full[kDofsPerNode * i + 3] += h.at(x_[i]);
-  if (outlet_open_) full[unknowns_->problem.node_dof_count()] = outlet_pressure();
+  if (outlet_open()) full[unknowns_->problem.node_dof_count()] = outlet_pressure();
   return full;
 }
 
@@ -532,15 +532,14 @@ void FluidWallCoupling::set_hydrostatic_state(double p_ref, const Eigen::Vector3
   // p = p_ref + ρ g·(x − x_ref) = p̃ + ρ g·(x − x_h): p̃ is uniform.
   const double p_tilde = p_ref - hydrostatic_part().at(x_ref);
   for (std::size_t i = 0; i < x_.size(); ++i) state_[kDofsPerNode * i + 3] = p_tilde;
-  if (outlet_open_)
-    state_[unknowns_->problem.node_dof_count()] = patch_mean_pressure(outlet_.faces, x_, state_);
+  if (outlet_open())
+    state_[unknowns_->problem.node_dof_count()] = patch_mean_pressure(outlet_->faces, x_, state_);
   state_old_ = state_;
 }
 
 void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
   require_held_inner_nodes(wall_, outlet.faces, "outlet");
   outlet_ = outlet;
-  outlet_open_ = true;
   unknowns_ = std::make_unique<Unknowns>(mesh_, outlet_boundary(), fluid_);
   build_unknowns();
   const int last = unknowns_->problem.node_dof_count();
@@ -553,18 +552,21 @@ void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
 
 FluidBoundary FluidWallCoupling::outlet_boundary() const {
   FluidBoundary boundary;
-  if (!outlet_open_) return boundary;
+  if (!outlet_open()) return boundary;
   // The law is in the full pressure at the patch centroid; the unknown is p̃ there (the
   // patch is held, so its centroid never moves).
-  boundary.outlets.push_back(outlet_);
-  boundary.outlets[0].opening_pressure -= hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+  const UrethraLaw& law = outlet_->law;
+  boundary.outlets.push_back(
+      {outlet_->faces,
+       law.with_opening_pressure(law.opening_pressure() -
+                                 hydrostatic_part().at(patch_centroid(outlet_->faces, x_)))});
   return boundary;
 }
 
 double FluidWallCoupling::outflow() const {
-  if (!outlet_open_) return 0.0;
+  if (!outlet_open()) return 0.0;
   double q = 0.0;
-  for (const auto& f : outlet_.faces) {
+  for (const auto& f : outlet_->faces) {
     const Eigen::Vector3d m = corner_area_normal(f, x_);
     for (int v : f) q += state_.segment<3>(kDofsPerNode * v).dot(m);
   }
@@ -572,9 +574,9 @@ double FluidWallCoupling::outflow() const {
 }
 
 double FluidWallCoupling::outlet_pressure() const {
-  if (!outlet_open_) return 0.0;
+  if (!outlet_open()) return 0.0;
   return state_[unknowns_->problem.node_dof_count()] +
-         hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+         hydrostatic_part().at(patch_centroid(outlet_->faces, x_));
 }
 
 namespace {
@@ -606,9 +608,9 @@ int FluidWallCoupling::remesh(double max_size_mm) {
                                                     fresh.nodes.end());
   const std::vector<TetLocation> where = locate_points(x_, mesh_.tets, interior_nodes);
   const Eigen::VectorXd state =
-      transferred_state(state_, n_wall, fresh.nodes.size(), outlet_open_, mesh_.tets, where);
+      transferred_state(state_, n_wall, fresh.nodes.size(), outlet_open(), mesh_.tets, where);
   const Eigen::VectorXd state_old =
-      transferred_state(state_old_, n_wall, fresh.nodes.size(), outlet_open_, mesh_.tets, where);
+      transferred_state(state_old_, n_wall, fresh.nodes.size(), outlet_open(), mesh_.tets, where);
   // The new mesh is the reference from now on: the mesh motion's displacement is
   // x_wall − mesh_.nodes[wall], zero at the current wall, as it must be.
   mesh_ = std::move(fresh);

@@ -15,6 +15,7 @@
 // motion of the interior nodes is lagged (quasi-Newton: more iterations, same solution).
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,7 +87,7 @@ class FluidWallCoupling {
   // the urethra law (FluidMesh.h) and their inner nodes get free urine velocities. The
   // outlet pressure starts at the hydrostatic value at the patch centroid.
   void open_outlet(const UrethraOutlet& outlet);
-  bool outlet_open() const { return outlet_open_; }
+  bool outlet_open() const { return outlet_.has_value(); }
   // Outflow through the open outlet (m³/s, positive out), 0 when closed.
   double outflow() const;
   // Pressure of the open outlet's law (Pa) at its centroid.
@@ -152,8 +153,7 @@ class FluidWallCoupling {
   double mean_edge_ = 0.0;               // of the reference wall (m)
   double eta_ = 0.0;                     // foundation stiffness carried to the next iteration
   int regularized_iterations_ = 0;
-  UrethraOutlet outlet_;
-  bool outlet_open_ = false;
+  std::optional<UrethraOutlet> outlet_;     // empty while the urethra is closed
   std::vector<Eigen::Vector3d> x_, x_old_;  // tet node positions now and at t_n
   std::vector<Eigen::Vector3d> wall_velocity_;
   Eigen::VectorXd state_, state_old_;
