@@ -73,17 +73,20 @@ struct LinearSolver::Backends {
   using Matrix = Eigen::SparseMatrix<double>;
   Eigen::UmfPackLU<Matrix> lu;
   Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> llt;
-  SymmetricIndefiniteLdlt ldlt;
+  // MUMPS is started only when a symmetric indefinite K first needs it.
+  std::unique_ptr<SymmetricIndefiniteLdlt> ldlt;
   bool lu_analyzed = false, llt_analyzed = false;
 };
 
-LinearSolver::LinearSolver() : backends_(std::make_unique<Backends>()) {
+LinearSolver::LinearSolver(Symmetry symmetry, Refinement refinement)
+    : backends_(std::make_unique<Backends>()), symmetry_(symmetry) {
   keep_solver_workspaces_resident();
   serialize_openmp_regions();
   single_threaded_blas();
   // Newton corrects any solve error at the next iteration, so UMFPACK's iterative
-  // refinement (two extra residual evaluations and solves per right-hand side) only costs.
-  backends_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+  // refinement (two extra residual evaluations and solves per right-hand side) only costs
+  // unless asked for.
+  if (refinement == Refinement::None) backends_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
   // A not-positive-definite K is an expected outcome (we then fall back to LDLᵀ): no
   // CHOLMOD warning on stdout.
   backends_->llt.cholmod().print = 0;
@@ -122,20 +125,23 @@ bool LinearSolver::is_symmetric(const Eigen::SparseMatrix<double>& K) {
   return true;
 }
 
+bool LinearSolver::factorize_lu(const Eigen::SparseMatrix<double>& K) {
+  Backends& b = *backends_;
+  if (!b.lu_analyzed) {
+    b.lu.analyzePattern(K);
+    b.lu_analyzed = true;
+  }
+  b.lu.factorize(K);
+  factorized_ = b.lu.info() == Eigen::Success;
+  method_ = Method::LU;
+  return factorized_;
+}
+
 bool LinearSolver::factorize(const Eigen::SparseMatrix<double>& K) {
   factorized_ = false;
   method_ = Method::None;
   Backends& b = *backends_;
-  if (!is_symmetric(K)) {
-    if (!b.lu_analyzed) {
-      b.lu.analyzePattern(K);
-      b.lu_analyzed = true;
-    }
-    b.lu.factorize(K);
-    factorized_ = b.lu.info() == Eigen::Success;
-    method_ = Method::LU;
-    return factorized_;
-  }
+  if (symmetry_ == Symmetry::Unsymmetric || !is_symmetric(K)) return factorize_lu(K);
   if (try_cholesky_) {
     if (!b.llt_analyzed) {
       b.llt.analyzePattern(K);
@@ -148,9 +154,10 @@ bool LinearSolver::factorize(const Eigen::SparseMatrix<double>& K) {
       return true;
     }
   }
-  factorized_ = b.ldlt.factorize(K);
+  if (!b.ldlt) b.ldlt = std::make_unique<SymmetricIndefiniteLdlt>();
+  factorized_ = b.ldlt->factorize(K);
   method_ = Method::SymmetricIndefinite;
-  try_cholesky_ = factorized_ && b.ldlt.negative_pivots() == 0;
+  try_cholesky_ = factorized_ && b.ldlt->negative_pivots() == 0;
   return factorized_;
 }
 
@@ -159,7 +166,7 @@ int LinearSolver::negative_eigenvalues() const {
     case Method::Cholesky:
       return 0;
     case Method::SymmetricIndefinite:
-      return backends_->ldlt.negative_pivots();
+      return backends_->ldlt->negative_pivots();
     default:
       return -1;
   }
@@ -170,7 +177,7 @@ Eigen::MatrixXd LinearSolver::solve(const Eigen::MatrixXd& B) const {
     case Method::Cholesky:
       return backends_->llt.solve(B);
     case Method::SymmetricIndefinite:
-      return backends_->ldlt.solve(B);
+      return backends_->ldlt->solve(B);
     default:
       return backends_->lu.solve(B);
   }

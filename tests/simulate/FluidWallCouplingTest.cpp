@@ -96,7 +96,7 @@ struct CoupledBalloon {
   // One filling step of Q (m³/s) for dt through the inlet node, and the balloon after it
   // against the analytic curve from its start volume V0.
   struct FillingStep {
-    CouplingReport report;
+    NewtonReport report;
     double V = 0.0, lambda = 1.0, P = 0.0, exact = 0.0;
   };
   FillingStep fill(double Q, double dt, WallLoads& loads, double V0) {
@@ -162,7 +162,7 @@ TEST(FluidWallCoupling, LightWallInDenseUrineStaysStable) {
   std::vector<double> energy;
   for (int s = 1; s <= 24; ++s) {
     const bool inflow = s <= 8;
-    const CouplingReport r =
+    const NewtonReport r =
         b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, inflow ? Q : 0.0));
     ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
     if (inflow) filled += Q * dt;

@@ -194,7 +194,7 @@ class FluidCystometryDriver {
       const auto start = std::chrono::steady_clock::now();
       inflow_.flow_rate = q_in;
       const WallLoads loads = loads_at(t_ + dt, dt);
-      const CouplingReport r = coupling_->step(dt, loads, q_in > 0.0 ? inflow_ : Inflow{});
+      const NewtonReport r = coupling_->step(dt, loads, q_in > 0.0 ? inflow_ : Inflow{});
       step_seconds_ +=
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       iterations_ += r.iterations;

@@ -25,7 +25,7 @@ struct FluidRunOptions {
   double series_interval_s = 5.0;  // frames while filling; every 0.5 s while voiding
   double urine_viscosity = 1e-3;   // Pa·s
   int threads = 2;
-  CouplingOptions coupling;
+  NewtonOptions coupling = coupled_newton_options();
   std::function<void(const std::string& step, double fraction)> on_progress;
 };
 
