@@ -37,7 +37,7 @@ std::vector<double> parse_list(const std::string& text, const std::string& optio
 
 // Default K/μ: the wall is mostly water, so nearly incompressible. With the thesis's
 // K/μ = 2 and the Ogden β = 9 the wall dilates instead of thinning and its pressure peaks
-// at 1.48x the residual volume (74 ml from 50 ml, physics.md §6), so a cystometry to
+// at 1.48x the residual volume (74 ml from 50 ml, docs/physics.md §6), so a cystometry to
 // capacity would run down a falling branch.
 constexpr double kDefaultBulkPerShear = 1000.0;
 
@@ -74,7 +74,7 @@ MaterialSpec material_spec(const Cli& c) {
     spec.params["beta" + std::to_string(a + 1)] = betas[a];
     spec.params["tau" + std::to_string(a + 1)] = taus[a];
   }
-  if (betas.empty() && c.material == "maxwell") {  // thesis fit (physics.md §2)
+  if (betas.empty() && c.material == "maxwell") {  // thesis fit (docs/physics.md §2)
     spec.params["beta1"] = 0.15;
     spec.params["tau1"] = 1e-4;
   }

@@ -168,7 +168,7 @@ StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
     step.loads = loads_at(time_ + dt);
     step.infused_m3 = infused_;
     step.voided_m3 = voided_;
-    const StepResult r = model_->try_step(step);
+    StepResult r = model_->try_step(step);
     take_notes();
     if (r.converged) {
       time_ += dt;

@@ -28,8 +28,8 @@ constexpr double kSymmetryTolerance = 1e-14;
 
 // UMFPACK allocates and frees its multi-megabyte numeric workspace at every factorization.
 // glibc serves such blocks by mmap and returns them to the system at free, so each
-// factorization page-faults its whole workspace in again (measured: 1.5 million faults,
-// 20 % of the CPU time of a calibration). Keeping blocks up to 32 MiB (glibc's largest
+// factorization page-faults its whole workspace in again, a large share of a
+// calibration's CPU time. Keeping blocks up to 32 MiB (glibc's largest
 // allowed threshold) in the heap and not trimming it lets the next factorization reuse
 // the same pages. Process-wide, once; the cost is that freed memory stays with the process.
 void keep_solver_workspaces_resident() {
@@ -44,9 +44,8 @@ void keep_solver_workspaces_resident() {
 
 // Debian's CHOLMOD opens an OpenMP team (up to 4 threads, more than our 2 cores) for each
 // supernode to copy K into the factor: memory-bound work that the team's wake-ups and
-// waits make slower (measured on the 5,000-triangle balloon: 140,000 context switches,
-// 3.8 s CPU against 2.7 s serial). The dense work runs in the BLAS's own threads and
-// the element loop in ours, so OpenMP regions run serially. Process-wide, once.
+// waits make slower than serial copying. The dense work runs in the BLAS's own threads
+// and the element loop in ours, so OpenMP regions run serially. Process-wide, once.
 void serialize_openmp_regions() {
   static std::once_flag once;
   std::call_once(once, [] { omp_set_max_active_levels(0); });
@@ -54,8 +53,8 @@ void serialize_openmp_regions() {
 
 // The supernodes of a membrane tangent are small (a few hundred columns), too small for
 // BLAS threads to pay off, and the element loop already uses the cores: with OpenBLAS as
-// the system BLAS, one BLAS thread unless OPENBLAS_NUM_THREADS says otherwise (measured on
-// the shared 2-core machine: 2.4 s CPU against 3.1-6.0 s with two BLAS threads). The BLAS
+// the system BLAS, one BLAS thread unless OPENBLAS_NUM_THREADS says otherwise (two BLAS
+// threads cost more CPU time and were slower on a shared 2-core machine). The BLAS
 // is whatever libblas.so.3 points to, so OpenBLAS is looked up at run time.
 void single_threaded_blas() {
   static std::once_flag once;
@@ -92,8 +91,8 @@ LinearSolver::LinearSolver(Symmetry symmetry, Refinement refinement)
   backends_->llt.cholmod().print = 0;
   // Fill-reducing ordering: AMD and METIS both tried once, the one with less fill kept.
   // CHOLMOD's default stops at AMD when its fill looks acceptable, but on a membrane mesh
-  // nested dissection is better (16,928-triangle sphere: 5.1e8 against 8.7e8 flops, 37
-  // against 46 ms a factorization), for 30 ms more analysis once per run.
+  // nested dissection is better (less fill and fewer flops per factorization on a large
+  // sphere), for a little more analysis once per run.
   cholmod_common& c = backends_->llt.cholmod();
   c.nmethods = 2;
   c.method[0].ordering = CHOLMOD_AMD;

@@ -1,5 +1,5 @@
 #pragma once
-// The 3-node membrane element, total Lagrangian (physics.md §1). One Gauss point: the
+// The 3-node membrane element, total Lagrangian (docs/physics.md §1). One Gauss point: the
 // shape-function gradients are constant over the triangle.
 #include <array>
 

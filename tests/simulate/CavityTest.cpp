@@ -1,4 +1,4 @@
-// Level-1 wall-urine coupling (physics.md §4-5):
+// Level-1 wall-urine coupling (docs/physics.md §4-5):
 //  - hydrostatics: the fixed base carries the urine's weight ρ g V within 0.5 %;
 //  - a stiff sphere drained through a linear outlet law follows the analytic exponential
 //    V - V0 = ΔV e^(-t/(R1 C)), C = dV/dP = R V0 / (4 H μ) from the balloon formula;
@@ -58,7 +58,7 @@ TEST(Cavity, StiffSphereDrainsExponentiallyWithMassBalance) {
   fix_sphere_rigid_modes(wall);
   const double V0 = enclosed_volume(wall, wall.nodes);
   const double Rh = std::cbrt(3.0 * V0 / (4.0 * 3.14159265358979323846));
-  // dP/dV of the balloon at λ = 1 (physics.md §6 linearised), in cmH2O per ml.
+  // dP/dV of the balloon at λ = 1 (docs/physics.md §6 linearised), in cmH2O per ml.
   const double dPdV = units::cmh2o_from_pa(4.0 * H * mu / (Rh * V0)) * units::kM3PerMl;
   const double tau = 1.0, R1 = tau * dPdV;  // R1 C = τ
   ProtocolSettings p;

@@ -1,4 +1,4 @@
-// Bossak–Newmark dynamics of the wall (physics.md §3) against an independent solution:
+// Bossak–Newmark dynamics of the wall (docs/physics.md §3) against an independent solution:
 // a thin incompressible neo-Hookean sphere under a suddenly applied inside pressure p
 // moves radially by Lagrange's equation for its one degree of freedom λ = r/R,
 //   ρ_w H R λ'' = λ² (p - P_s(λ)),  P_s(λ) = 2 (H/R) μ (λ⁻¹ - λ⁻⁷),

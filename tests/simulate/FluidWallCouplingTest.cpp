@@ -2,7 +2,7 @@
 // neo-Hookean balloon (R = 23 mm, H = 3 mm, μ = 5 kPa, K = 1000 μ) filled with urine
 // through one inlet node:
 //  (c) slow filling (5 steps of 2 ml): the urine pressure against the analytic balloon
-//      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (physics.md §6), within 3 %, and the tet
+//      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (docs/physics.md §6), within 3 %, and the tet
 //      volume against V0 + ∫Q dt within 0.5 %;
 //  (d) wall 920 kg/m³ against urine 1000 kg/m³ with 1 ms steps: a sudden inflow and its
 //      stop do not blow up (bounded velocity, kinetic energy decays after the stop);

@@ -1,5 +1,5 @@
 // Level-2 urine flow on rigid tetrahedral meshes (docs/navier-stokes.md), against the
-// analytic answers of physics.md §6: hydrostatics p = ρ g depth with zero velocity, and
+// analytic answers of docs/physics.md §6: hydrostatics p = ρ g depth with zero velocity, and
 // Poiseuille flow Q = π R⁴ Δp / (8 μ L). Meshes come from gmsh's OCC kernel. SI units.
 #include <gmsh.h>
 #include <gtest/gtest.h>

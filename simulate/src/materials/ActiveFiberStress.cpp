@@ -1,4 +1,4 @@
-// Active detrusor fiber stress S_a = T_a(t) A / Ī4 along both families (physics.md §2).
+// Active detrusor fiber stress S_a = T_a(t) A / Ī4 along both families (docs/physics.md §2).
 #include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {

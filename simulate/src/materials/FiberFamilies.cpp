@@ -1,4 +1,4 @@
-// Matrix + two exponential fiber families, tension only (physics.md §2).
+// Matrix + two exponential fiber families, tension only (docs/physics.md §2).
 #include <cmath>
 
 #include "materials/DecoupledParts.h"

@@ -1,4 +1,4 @@
-// Isochoric neo-Hookean matrix (physics.md §2): S_iso = μ J^(-2/3)(I - (1/3) tr(C) C⁻¹).
+// Isochoric neo-Hookean matrix (docs/physics.md §2): S_iso = μ J^(-2/3)(I - (1/3) tr(C) C⁻¹).
 #include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {

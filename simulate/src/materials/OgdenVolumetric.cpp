@@ -1,4 +1,4 @@
-// Ogden volumetric term and the shared decoupled kinematics (physics.md §2).
+// Ogden volumetric term and the shared decoupled kinematics (docs/physics.md §2).
 #include <cmath>
 
 #include "materials/DecoupledParts.h"

@@ -16,6 +16,6 @@ struct FluidMesh {
   std::vector<std::array<int, 4>> tets;  // either orientation
 };
 
-constexpr int kDofsPerNode = 4;
+constexpr Eigen::Index kDofsPerNode = 4;
 
 }  // namespace vesica::simulate::fluid
