@@ -54,9 +54,11 @@ def get(data, *keys):
 def newton_text(newton):
     if not isinstance(newton, dict):
         return None
-    parts = [f"{newton.get('steps', '?')} steps", f"{newton.get('iterations', '?')} iterations",
-             f"{newton.get('cutbacks', '?')} cut-backs"]
-    return " / ".join(parts)
+    def count(key, word):
+        n = newton.get(key, "?")
+        return f"{num(n) if isinstance(n, (int, float)) else n} {word}{'' if n == 1 else 's'}"
+    return " / ".join([count("steps", "step"), count("iterations", "iteration"),
+                       count("cutbacks", "cut-back")])
 
 
 def join(*parts):
