@@ -1,7 +1,8 @@
 # vesica: two commands set everything up.
 #   make demo   install missing Debian packages, build (Release), run the demo pipeline
 #   make test   same set-up, then every test through ctest
-#   make bench  same set-up, then the benchmarks (JSON in build/bench/)
+#   make bench  same set-up, then the benchmarks (JSON in build/bench/, table in
+#               docs/benchmarks.md)
 # Everything is idempotent: a second call installs nothing and rebuilds only what changed.
 
 BUILD_DIR ?= build
@@ -43,8 +44,10 @@ demo: build
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# BENCH="segment surface" runs only those benchmarks (bench/bench_NAME.sh); every run
+# rewrites the table of docs/benchmarks.md.
 bench: build
-	bench/run.sh $(BUILD_DIR)
+	bench/run.sh $(BUILD_DIR) $(BENCH)
 
 format:
 	find core segment surface mesh simulate compare pipelines tests bench \

@@ -1,6 +1,6 @@
 #pragma once
 // One simulated cystometry as read back from vesica-simulate's history.csv, and the study
-// numbers defined on it (physics.md §7). Units are those of the file's columns: volumes in
+// numbers defined on it (docs/physics.md §7). Units are those of the file's columns: volumes in
 // ml, pressures in cmH2O, flow in ml/s, time in s; the study table reports them as such.
 #include <cstddef>
 #include <filesystem>
