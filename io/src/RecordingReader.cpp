@@ -1,18 +1,18 @@
-#include "vesica/compare/RecordingReader.h"
+#include "vesica/io/RecordingReader.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <vector>
 
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/io/CsvTable.h"
 
-namespace vesica::compare {
+namespace vesica::io {
 namespace {
 
 enum class Quantity { Time, Text, Pressure, Flow, Volume };
@@ -38,40 +38,6 @@ std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
-// Splits one CSV line; double quotes protect commas ("a, b") and "" is a literal quote.
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cells.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cells.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.emplace_back();
-    } else {
-      cells.back() += c;
-    }
-  }
-  for (auto& c : cells) c = trim(c);
-  return cells;
 }
 
 // Factor from a unit (lowercase, "_" or "/" separated) to the channel's clinical unit;
@@ -309,31 +275,19 @@ ColumnMap parse_column_map(const std::string& text) {
 
 Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& options) {
   const std::string file = csv.string();
-  std::ifstream in(csv);
-  if (!in) fail(file, "cannot open the recording", "check the path");
+  if (!std::filesystem::exists(csv)) fail(file, "cannot open the recording", "check the path");
+  const CsvTable table = read_csv_table(csv);
+  const std::vector<BoundColumn> bound = bind_columns(table.header, options, file);
   Recording r;
   r.source = file;
-  std::vector<BoundColumn> bound;
-  std::size_t header_size = 0;
-  std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
-    const std::string t = trim(text);
-    if (t.empty() || t[0] == '#') continue;
-    const auto cells = split_csv(t);
-    if (bound.empty()) {
-      bound = bind_columns(cells, options, file);
-      header_size = cells.size();
-      continue;
-    }
-    if (cells.size() != header_size)
-      fail(file, "row " + std::to_string(line) + ": " + std::to_string(cells.size()) +
-                     " cells, the header has " + std::to_string(header_size));
-    r.line.push_back(line);
-    for (const auto& b : bound) read_cell(b, cells[b.index], line, file, r);
-  }
-  if (bound.empty()) fail(file, "no header row", "the first non-comment line names the columns");
-  if (r.rows() < 2) fail(file, "fewer than two data rows");
+  r.line = table.line;
+  for (std::size_t row = 0; row < table.row_count(); ++row)
+    for (const auto& b : bound) read_cell(b, table.rows[row][b.index], table.line[row], file, r);
+  if (r.rows() < options.min_rows)
+    fail(file, options.min_rows == 2
+                   ? "fewer than two data rows"
+                   : "fewer than " + std::to_string(options.min_rows) + " data rows");
   return r;
 }
 
-}  // namespace vesica::compare
+}  // namespace vesica::io
