@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "LowerCase.h"
 #include "SlicerHeader.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
@@ -23,12 +24,6 @@ namespace {
 
 using ReadImage = itk::Image<int, 3>;
 using WriteImage = itk::Image<std::uint8_t, 3>;
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 bool ends_with(const std::string& name, const std::string& tail) {
   return name.size() >= tail.size() &&
@@ -68,7 +63,7 @@ std::size_t LabelMap::voxel_count() const {
 }
 
 bool is_label_map_file(const std::filesystem::path& path) {
-  const std::string name = lower(path.filename().string());
+  const std::string name = detail::lower_case(path.filename().string());
   for (const char* ext : {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"})
     if (ends_with(name, ext)) return true;
   return false;
@@ -139,7 +134,7 @@ void write_label_map(const LabelMap& map, const std::filesystem::path& path) {
     auto writer = itk::ImageFileWriter<WriteImage>::New();
     writer->SetInput(image);
     writer->SetFileName(tmp.string());
-    writer->SetUseCompression(!ends_with(lower(file), ".nii"));
+    writer->SetUseCompression(!ends_with(detail::lower_case(file), ".nii"));
     try {
       writer->Update();
     } catch (const itk::ExceptionObject& e) {

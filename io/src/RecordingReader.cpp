@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "LowerCase.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/CsvTable.h"
@@ -32,12 +33,6 @@ const std::vector<Channel>& channels() {
       {"volume", Quantity::Volume, {}},
   };
   return all;
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
 }
 
 // Factor from a unit (lowercase, "_" or "/" separated) to the channel's clinical unit;
@@ -91,7 +86,7 @@ std::optional<std::string> bracket_unit(const std::string& header) {
   if (open == std::string::npos) return std::nullopt;
   const auto close = header.find_first_of("])", open);
   if (close == std::string::npos) return std::nullopt;
-  std::string u = lower(trim(header.substr(open + 1, close - open - 1)));
+  std::string u = detail::lower_case(trim(header.substr(open + 1, close - open - 1)));
   u.erase(std::remove(u.begin(), u.end(), ' '), u.end());
   return u;
 }
@@ -103,7 +98,7 @@ std::string column_place(const std::string& header) {
 double default_factor(const Channel& ch, const ReaderOptions& options, const std::string& file,
                       const std::string& header) {
   if (ch.quantity != Quantity::Pressure) return 1.0;
-  const auto f = unit_factor(Quantity::Pressure, lower(options.pressure_unit));
+  const auto f = unit_factor(Quantity::Pressure, detail::lower_case(options.pressure_unit));
   if (!f)
     fail(file, column_place(header) + ": unknown pressure unit \"" + options.pressure_unit + "\"",
          unit_hint(Quantity::Pressure));
@@ -114,7 +109,7 @@ double default_factor(const Channel& ch, const ReaderOptions& options, const std
 std::optional<BoundColumn> bind_default(const Channel& ch, const std::vector<std::string>& header,
                                         const ReaderOptions& options, const std::string& file) {
   for (std::size_t i = 0; i < header.size(); ++i) {
-    const std::string h = lower(header[i]);
+    const std::string h = detail::lower_case(header[i]);
     std::vector<std::string> plain = ch.plain_names;
     plain.push_back(ch.key);
     if (const auto bu = bracket_unit(h)) {
@@ -146,7 +141,7 @@ BoundColumn bind_mapped(const Channel& ch, const std::string& name,
                         const std::vector<std::string>& header, const ReaderOptions& options,
                         const std::string& file) {
   for (std::size_t i = 0; i < header.size(); ++i) {
-    if (lower(header[i]) != lower(trim(name))) continue;
+    if (detail::lower_case(header[i]) != detail::lower_case(trim(name))) continue;
     if (ch.quantity == Quantity::Text) return BoundColumn{&ch, i, header[i], 1.0};
     if (const auto bu = bracket_unit(header[i])) {
       const auto f = unit_factor(ch.quantity, *bu);
@@ -155,7 +150,7 @@ BoundColumn bind_mapped(const Channel& ch, const std::string& name,
              unit_hint(ch.quantity));
       return BoundColumn{&ch, i, header[i], *f};
     }
-    const std::string h = lower(header[i]);
+    const std::string h = detail::lower_case(header[i]);
     for (std::size_t p = h.find('_'); p != std::string::npos; p = h.find('_', p + 1))
       if (const auto f = unit_factor(ch.quantity, h.substr(p + 1)))
         return BoundColumn{&ch, i, header[i], *f};
@@ -262,7 +257,7 @@ ColumnMap parse_column_map(const std::string& text) {
     if (trim(item).empty()) continue;
     const auto eq = item.find('=');
     if (eq == std::string::npos) usage_error("--columns: \"" + item + "\" is not KEY=NAME");
-    const std::string key = lower(trim(item.substr(0, eq)));
+    const std::string key = detail::lower_case(trim(item.substr(0, eq)));
     const bool known = std::any_of(channels().begin(), channels().end(),
                                    [&](const Channel& c) { return key == c.key; });
     if (!known)

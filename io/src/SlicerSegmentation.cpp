@@ -9,17 +9,12 @@
 #include <cctype>
 #include <sstream>
 
+#include "LowerCase.h"
 #include "SlicerHeader.h"
 #include "vesica/core/Error.h"
 
 namespace vesica::io {
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 // Voxel bounds "i0 i1 j0 j1 k0 k1" of the inside voxels (Slicer's Segment<N>_Extent).
 std::string extent_of(const LabelMap& map) {
@@ -44,7 +39,7 @@ std::string extent_of(const LabelMap& map) {
 }  // namespace
 
 bool is_slicer_segmentation(const std::filesystem::path& path) {
-  const std::string name = lower(path.filename().string());
+  const std::string name = detail::lower_case(path.filename().string());
   return name.size() > 9 && name.compare(name.size() - 9, 9, ".seg.nrrd") == 0;
 }
 
@@ -80,7 +75,7 @@ std::vector<SegmentInfo> read_segments(const std::filesystem::path& path) {
 
 int bladder_label_value(const std::vector<SegmentInfo>& segments, const std::string& file) {
   for (const SegmentInfo& s : segments)
-    if (lower(s.name) == kBladderSegmentName) return s.label_value;
+    if (detail::lower_case(s.name) == kBladderSegmentName) return s.label_value;
   if (segments.size() == 1) return segments.front().label_value;
   std::string names;
   for (const SegmentInfo& s : segments) names += (names.empty() ? "" : ", ") + s.name;

@@ -27,6 +27,7 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include "LowerCase.h"
 #include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
 #include "vesica/core/AtomicOutput.h"
@@ -39,10 +40,7 @@ namespace vesica::io {
 namespace {
 
 std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
+  return detail::lower_case(path.extension().string());
 }
 
 // The file's polygons as VTK reads them, before any cleaning (so that a sidecar's tags,
