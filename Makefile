@@ -13,7 +13,7 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
-  xvfb xauth chromium snakemake
+  xvfb xauth chromium snakemake python3-meshio
 
 .PHONY: all deps configure build demo test bench format clean
 
@@ -50,7 +50,7 @@ bench: build
 	bench/run.sh $(BUILD_DIR) $(BENCH)
 
 format:
-	find core segment surface mesh simulate compare pipelines tests bench \
+	find core io segment surface mesh simulate compare pipelines tests bench \
 	  \( -name '*.h' -o -name '*.cpp' \) -print0 | xargs -0 clang-format -i
 
 clean:

@@ -19,8 +19,9 @@ struct CystometryCurve {
   std::size_t filling_end() const;
 };
 
-// Reads the columns time_s, volume_ml, pdet_cmh2o and flow_ml_s (others are ignored).
-// Throws vesica::Error naming the file for a missing column or a non-numeric cell.
+// Reads the columns time_s, volume_ml, pdet_cmh2o and flow_ml_s (others are ignored)
+// through vesica_io's history reader (vesica/io/HistoryCsv.h). Throws vesica::Error naming
+// the file for a missing column or a non-numeric cell.
 CystometryCurve read_history_csv(const std::filesystem::path& csv);
 
 // Pdet where the filling curve passes `volume_ml`, linearly interpolated between rows;
