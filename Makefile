@@ -3,10 +3,13 @@
 #   make test   same set-up, then every test through ctest
 #   make bench  same set-up, then the benchmarks (JSON in build/bench/, table in
 #               docs/benchmarks.md)
+#   make install [PREFIX=/usr/local]  build, then install executables, libraries, headers,
+#               the CMake package (find_package(vesica)) and the example pipelines
 # Everything is idempotent: a second call installs nothing and rebuilds only what changed.
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
+PREFIX    ?= /usr/local
 SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
@@ -15,7 +18,7 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
   xvfb xauth chromium snakemake
 
-.PHONY: all deps configure build demo test bench format clean
+.PHONY: all deps configure build demo test bench install format clean
 
 all: build
 
@@ -48,6 +51,9 @@ test: build
 # rewrites the table of docs/benchmarks.md.
 bench: build
 	bench/run.sh $(BUILD_DIR) $(BENCH)
+
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
 
 format:
 	find core segment surface mesh simulate compare pipelines tests bench \

@@ -1,25 +1,65 @@
-# Helpers that give every vesica target the same warnings and conventions.
+# Helpers that give every vesica target the same warnings, conventions and install rules.
+include(GNUInstallDirs)
 
 # Warnings apply to our own sources only; third-party headers are SYSTEM includes.
 function(vesica_warnings target)
   target_compile_options(${target} PRIVATE -Wall -Wextra)
 endfunction()
 
+# Tests and benchmarks build executables with the same helper; they are never installed.
+function(vesica_is_shipped out)
+  file(RELATIVE_PATH rel ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  if(rel MATCHES "^(tests|bench)(/|$)")
+    set(${out} OFF PARENT_SCOPE)
+  else()
+    set(${out} ON PARENT_SCOPE)
+  endif()
+endfunction()
+
 # vesica_library(NAME SOURCES... DEPS ...): a stage or core library.
+# Installed with its folder's public headers (include/, and a generated include/ in the
+# binary folder when there is one) and exported as vesica::<NAME without "vesica_">
+# (vesica_simulate -> vesica::simulate) in the package of cmake/vesicaConfig.cmake.in.
 function(vesica_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})
-  target_include_directories(${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  target_include_directories(${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  if(EXISTS ${CMAKE_CURRENT_BINARY_DIR}/include)
+    target_include_directories(${name} PUBLIC
+      $<BUILD_INTERFACE:${CMAKE_CURRENT_BINARY_DIR}/include>)
+  endif()
   target_link_libraries(${name} PUBLIC ${ARG_DEPS})
   vesica_warnings(${name})
+
+  vesica_is_shipped(shipped)
+  if(NOT shipped)
+    return()
+  endif()
+  string(REGEX REPLACE "^vesica_" "" export_name ${name})
+  set_target_properties(${name} PROPERTIES EXPORT_NAME ${export_name})
+  install(TARGETS ${name} EXPORT vesicaTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development)
+  foreach(dir ${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_BINARY_DIR}/include)
+    if(EXISTS ${dir})
+      install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT Development
+        FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
+    endif()
+  endforeach()
 endfunction()
 
-# vesica_executable(NAME SOURCES... DEPS ...): a thin main.
+# vesica_executable(NAME SOURCES... DEPS ...): a thin main, installed to bin/ (where the
+# runner finds its stages, beside itself) unless it is a test's or a benchmark's.
 function(vesica_executable name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS})
   vesica_warnings(${name})
+  vesica_is_shipped(shipped)
+  if(shipped)
+    install(TARGETS ${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT Runtime)
+  endif()
 endfunction()
 
 # vesica_test(NAME SOURCES... DEPS ... [LABELS ...] [TIMEOUT s]): one GoogleTest binary,
