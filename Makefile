@@ -5,6 +5,8 @@
 #               docs/benchmarks.md)
 #   make install [PREFIX=/usr/local]  build, then install executables, libraries, headers,
 #               the CMake package (find_package(vesica)) and the example pipelines
+#   make package  build, then the Debian packages build/vesica_<version>_amd64.deb and
+#               build/vesica-dev_<version>_amd64.deb (CPack)
 # Everything is idempotent: a second call installs nothing and rebuilds only what changed.
 
 BUILD_DIR ?= build
@@ -16,9 +18,9 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
-  xvfb xauth chromium snakemake
+  xvfb xauth chromium snakemake dpkg-dev
 
-.PHONY: all deps configure build demo test bench install format clean
+.PHONY: all deps configure build demo test bench install package format clean
 
 all: build
 
@@ -54,6 +56,10 @@ bench: build
 
 install: build
 	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+package: build
+	cd $(BUILD_DIR) && cpack -G DEB
+	@ls $(BUILD_DIR)/*.deb
 
 format:
 	find core segment surface mesh simulate compare pipelines tests bench \
