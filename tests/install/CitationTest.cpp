@@ -41,7 +41,7 @@ TEST(Citation, LicenceIsTheGplVersion3OrLaterOfLicenseAndReadme) {
   const YAML::Node cff = YAML::LoadFile((vesica::test::source_dir() / "CITATION.cff").string());
   EXPECT_EQ(cff["license"].as<std::string>(), "GPL-3.0-or-later");
   const std::string license = read_text(vesica::test::source_dir() / "LICENSE");
-  EXPECT_EQ(license.find("GNU GENERAL PUBLIC LICENSE"), license.find_first_not_of(" "));
+  EXPECT_EQ(license.find("GNU GENERAL PUBLIC LICENSE"), license.find_first_not_of(' '));
   EXPECT_NE(license.find("Version 3, 29 June 2007"), std::string::npos);
   const std::string readme = read_text(vesica::test::source_dir() / "README.md");
   EXPECT_NE(readme.find("GPL-3.0-or-later"), std::string::npos);
