@@ -18,7 +18,10 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
-  xvfb xauth chromium snakemake dpkg-dev
+  xvfb xauth chromium snakemake
+
+# make package: dpkg-shlibdeps computes the Debian package's Depends.
+DEBIAN_PACKAGES += dpkg-dev
 
 .PHONY: all deps configure build demo test bench install package format clean
 
