@@ -11,9 +11,15 @@
 include(CMakeFindDependencyMacro)
 
 # find_package in the build, find_dependency (which marks vesica as not found instead of
-# stopping the consumer's configure) inside find_package(vesica).
+# stopping the consumer's configure) inside find_package(vesica). Decided once, here: the
+# dependencies' own configs change CMAKE_FIND_PACKAGE_NAME while they load.
+if(CMAKE_FIND_PACKAGE_NAME STREQUAL "vesica")
+  set(_vesica_as_package TRUE)
+else()
+  set(_vesica_as_package FALSE)
+endif()
 macro(vesica_find_dependency)
-  if(CMAKE_FIND_PACKAGE_NAME STREQUAL "vesica")
+  if(_vesica_as_package)
     find_dependency(${ARGN})
   else()
     find_package(${ARGN} REQUIRED)
