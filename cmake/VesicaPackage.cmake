@@ -72,6 +72,6 @@ set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "vesica (= ${PROJECT_VERSION}), \
 libinsighttoolkit5-dev, libgdcm-dev, libvtk9-dev, libcgal-dev, libgmsh-dev, libeigen3-dev, \
 libsuitesparse-dev, libmumps-seq-dev, libassimp-dev, libyaml-cpp-dev, nlohmann-json3-dev, \
-libcli11-dev, libfmt-dev, libspdlog-dev, libssl-dev, cmake, g++")
+libcli11-dev, libfmt-dev, libspdlog-dev, libssl-dev")
 
 include(CPack)
