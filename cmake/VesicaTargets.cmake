@@ -17,16 +17,19 @@ function(vesica_is_shipped out)
 endfunction()
 
 # vesica_library(NAME SOURCES... DEPS ...): a stage or core library.
-# Installed with its folder's public headers (include/, and a generated include/ in the
-# binary folder when there is one) and exported as vesica::<NAME without "vesica_">
-# (vesica_simulate -> vesica::simulate) in the package of cmake/vesicaConfig.cmake.in.
+# Installed with its folder's public headers, include/**/*.h, and those configured from
+# include/**/*.h.in into the same place under the binary folder (core's Version.h), and
+# exported as vesica::<NAME without "vesica_"> (vesica_simulate -> vesica::simulate) in the
+# package of cmake/vesicaConfig.cmake.in.
 function(vesica_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})
   target_include_directories(${name} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
-  if(EXISTS ${CMAKE_CURRENT_BINARY_DIR}/include)
+  file(GLOB_RECURSE configured RELATIVE ${CMAKE_CURRENT_SOURCE_DIR}/include
+    ${CMAKE_CURRENT_SOURCE_DIR}/include/*.h.in)
+  if(configured)
     target_include_directories(${name} PUBLIC
       $<BUILD_INTERFACE:${CMAKE_CURRENT_BINARY_DIR}/include>)
   endif()
@@ -41,11 +44,15 @@ function(vesica_library name)
   set_target_properties(${name} PROPERTIES EXPORT_NAME ${export_name})
   install(TARGETS ${name} EXPORT vesicaTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development)
-  foreach(dir ${CMAKE_CURRENT_SOURCE_DIR}/include ${CMAKE_CURRENT_BINARY_DIR}/include)
-    if(EXISTS ${dir})
-      install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT Development
-        FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
-    endif()
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/include)
+    install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+      COMPONENT Development FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
+  endif()
+  foreach(template ${configured})
+    string(REGEX REPLACE "\\.in$" "" header ${template})
+    get_filename_component(folder ${header} DIRECTORY)
+    install(FILES ${CMAKE_CURRENT_BINARY_DIR}/include/${header}
+      DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${folder} COMPONENT Development)
   endforeach()
 endfunction()
 
