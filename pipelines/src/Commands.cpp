@@ -16,7 +16,7 @@
 #include "vesica/pipelines/SnakemakeExport.h"
 #include "vesica/pipelines/Staleness.h"
 #include "vesica/pipelines/StudyReport.h"
-#include "vesica/pipelines/Suggest.h"
+#include "vesica/core/Suggest.h"
 
 namespace fs = std::filesystem;
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "vesica/pipelines/Suggest.h"
+#include "vesica/core/Suggest.h"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "vesica/pipelines/StudyExpansion.h"
-#include "vesica/pipelines/Suggest.h"
+#include "vesica/core/Suggest.h"
 
 namespace fs = std::filesystem;
 
