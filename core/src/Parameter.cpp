@@ -20,6 +20,12 @@ std::string shown(const nlohmann::json& value) {
     for (const auto& item : value) text += (text.empty() ? "" : ",") + shown(item);
     return text.empty() ? "none" : text;
   }
+  if (value.is_object()) {  // "fixed=4,outlet=5"
+    std::string text;
+    for (const auto& [key, item] : value.items())
+      text += (text.empty() ? "" : ",") + key + "=" + shown(item);
+    return text.empty() ? "none" : text;
+  }
   return value.dump();
 }
 
@@ -34,9 +40,8 @@ std::string Parameter::option() const {
 std::string Parameter::accepted() const {
   switch (kind) {
     case Kind::Number:
-      return range.describe(unit);
     case Kind::Integer:
-      return "whole number in " + range.describe(unit);
+      return range.describe(unit);
     case Kind::Flag:
       return "on or off";
     case Kind::Choice:
@@ -55,8 +60,8 @@ std::string Parameter::default_text() const {
   if (text.empty()) return "none";
   const bool numeric = kind == Kind::Number || kind == Kind::Integer;
   if (numeric && default_value.is_number()) {
-    const std::string meaning = range.meaning_of(default_value.get<double>());
-    if (!meaning.empty()) return text + " (" + meaning + ")";
+    // A special value's meaning is in accepted(); its unit would mislead ("0 mm" for auto).
+    if (!range.meaning_of(default_value.get<double>()).empty()) return text;
   }
   return numeric && !unit.empty() && unit != "-" ? text + " " + unit : text;
 }

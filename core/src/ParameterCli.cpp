@@ -27,8 +27,8 @@ std::string type_name(const Parameter& p) {
 
 std::string help_line(const Parameter& p) {
   if (p.kind == Parameter::Kind::Input) return p.help;
-  if (p.kind == Parameter::Kind::Flag) return p.help + " [default " + p.default_text() + "]";
-  return p.help + " [" + p.accepted() + "; default " + p.default_text() + "]";
+  if (p.kind == Parameter::Kind::Flag) return p.help + " (default " + p.default_text() + ")";
+  return p.help + " (accepts " + p.accepted() + "; default " + p.default_text() + ")";
 }
 
 void add_parameter_options(CLI::App& app, ParameterTable& table) {

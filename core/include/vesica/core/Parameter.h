@@ -43,7 +43,7 @@ struct Parameter {
   std::string option() const;
   // What is accepted, for help and errors: "[0.5, 50] mm", "one of sphere, pouch".
   std::string accepted() const;
-  // "4 mm", "auto", "off": the default as a user reads it.
+  // "4 mm", "auto", "off": the default as a user reads it (a special number bare: "0").
   std::string default_text() const;
   // Everything above as JSON (for `--parameters-json`, the runner and the docs).
   nlohmann::json describe() const;

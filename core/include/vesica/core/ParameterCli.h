@@ -15,7 +15,7 @@ namespace vesica {
 // The table must outlive the parse: options store into the fields it is bound to.
 void add_parameter_options(CLI::App& app, ParameterTable& table);
 
-// "edge length (mm) [accepts [0.5, 50] mm; default 4 mm]": one help line.
+// "edge length (accepts [0.5, 50] mm; default 4 mm)": one help line.
 std::string help_line(const Parameter& parameter);
 
 }  // namespace vesica
