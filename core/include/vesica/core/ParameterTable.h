@@ -123,13 +123,16 @@ Parameter& ParameterTable::choice(const std::string& name, Enum& field,
   p.kind = Parameter::Kind::Choice;
   p.help = help;
   for (const auto& n : names) p.choices.push_back(n.first);
-  p.assign = [&field, names, choices = p.choices](const std::string& text) {
-    for (const auto& n : names)
+  p.assign = [&field, names](const std::string& text) {
+    std::string known;
+    for (const auto& n : names) {
       if (n.first == text) {
         field = n.second;
         return;
       }
-    throw ParameterValueError("'" + text + "' is not one of " + nlohmann::json(choices).dump());
+      known += (known.empty() ? "" : ", ") + n.first;
+    }
+    throw ParameterValueError("'" + text + "' is not one of " + known);
   };
   p.value = [&field, names] {
     for (const auto& n : names)
