@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "PipelineTestSupport.h"
+#include "vesica/pipelines/ParameterReference.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::test;
@@ -136,4 +137,11 @@ TEST(ParameterCheck, DemoAndStudyPipelinesPass) {
                               dir);
     EXPECT_EQ(r.exit_code, 0) << file << ": " << r.err;
   }
+}
+
+TEST(ParameterReference, DocsListTheTablesDefaultsAndRanges) {
+  const std::string docs = slurp(source_dir() / "docs" / "parameters.md");
+  EXPECT_EQ(docs, vesica::pipelines::parameter_reference_markdown())
+      << "docs/parameters.md differs from the parameter tables: regenerate it with\n"
+         "  build/bin/vesica parameters > docs/parameters.md";
 }
