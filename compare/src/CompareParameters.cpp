@@ -7,7 +7,7 @@ const NumberRange kVolume = NumberRange::at_least(0).at_most(5000);
 
 // "LO,HI" in ml, LO below HI.
 std::vector<double> volume_range_from_text(const std::string& text) {
-  const std::vector<double> v = numbers_from_text(text, 2, "LO,HI");
+  std::vector<double> v = numbers_from_text(text, 2, "LO,HI");
   for (double ml : v)
     if (!kVolume.contains(ml)) throw_out_of_range(format_number(ml), kVolume, "ml");
   if (!(v[0] < v[1])) throw ParameterValueError("'" + text + "': LO must be below HI");

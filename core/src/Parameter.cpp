@@ -56,7 +56,7 @@ std::string Parameter::accepted() const {
 
 std::string Parameter::default_text() const {
   if (kind == Kind::Flag) return default_value.get<bool>() ? "on" : "off";
-  const std::string text = shown(default_value);
+  std::string text = shown(default_value);
   if (text.empty()) return "none";
   const bool numeric = kind == Kind::Number || kind == Kind::Integer;
   if (numeric && default_value.is_number()) {

@@ -22,31 +22,25 @@ Parameter& ParameterTable::add(Parameter parameter) {
   return entries_.back();
 }
 
-Parameter& ParameterTable::number(const std::string& name, double& field, const std::string& unit,
-                                  const NumberRange& range, const std::string& help) {
+Parameter ParameterTable::entry(const std::string& name, Parameter::Kind kind,
+                                const std::string& unit, const std::string& help) {
   Parameter p;
   p.name = name;
-  p.kind = Parameter::Kind::Number;
+  p.kind = kind;
   p.unit = unit;
-  p.range = range;
   p.help = help;
-  p.assign = [&field, range, unit](const std::string& text) {
-    const double v = number_from_text(text);
-    if (!range.contains(v)) throw_out_of_range(text, range, unit);
-    field = v;
-  };
-  p.value = [&field] { return nlohmann::json(field); };
-  return add(std::move(p));
+  return p;
+}
+
+Parameter& ParameterTable::number(const std::string& name, double& field, const std::string& unit,
+                                  const NumberRange& range, const std::string& help) {
+  return numeric(name, Parameter::Kind::Number, field, unit, range, help, number_from_text);
 }
 
 namespace {
 
-Parameter flag_entry(const std::string& name, bool& field, bool when_given,
-                     const std::string& help) {
-  Parameter p;
-  p.name = name;
-  p.kind = Parameter::Kind::Flag;
-  p.help = help;
+// A flag that stores `when_given` when given.
+void bind_flag(bool& field, bool when_given, Parameter& p) {
   // "true" is what the runner passes for `name: true` (and CLI11 for a bare flag).
   p.assign = [&field, when_given](const std::string& text) {
     if (text == "true")
@@ -57,23 +51,27 @@ Parameter flag_entry(const std::string& name, bool& field, bool when_given,
       throw ParameterValueError("'" + text + "' is not true or false");
   };
   p.value = [&field, when_given] { return nlohmann::json(field == when_given); };
-  return p;
 }
 
 }  // namespace
 
 Parameter& ParameterTable::flag(const std::string& name, bool& field, const std::string& help) {
-  return add(flag_entry(name, field, true, help));
+  Parameter p = entry(name, Parameter::Kind::Flag, "", help);
+  bind_flag(field, true, p);
+  return add(std::move(p));
 }
 
 Parameter& ParameterTable::flag_off(const std::string& name, bool& field, const std::string& help) {
-  return add(flag_entry(name, field, false, help));
+  Parameter p = entry(name, Parameter::Kind::Flag, "", help);
+  bind_flag(field, false, p);
+  return add(std::move(p));
 }
 
 Parameter& ParameterTable::choice(const std::string& name, std::string& field,
                                   const std::vector<std::string>& choices,
                                   const std::string& help) {
   std::vector<std::pair<std::string, std::string>> names;
+  names.reserve(choices.size());
   for (const auto& c : choices) names.emplace_back(c, c);
   return choice<std::string>(name, field, names, help);
 }
@@ -89,12 +87,8 @@ Parameter& ParameterTable::custom(const std::string& name, const std::string& un
                                   const std::string& syntax, const std::string& help,
                                   std::function<void(const std::string&)> assign,
                                   std::function<nlohmann::json()> value) {
-  Parameter p;
-  p.name = name;
-  p.kind = Parameter::Kind::Text;
-  p.unit = unit;
+  Parameter p = entry(name, Parameter::Kind::Text, unit, help);
   p.syntax = syntax;
-  p.help = help;
   p.assign = std::move(assign);
   p.value = std::move(value);
   return add(std::move(p));

@@ -21,9 +21,11 @@ std::map<Region, double> thickness_by_region_from_text(const std::string& text) 
                                 "fixed, support");
     const std::string mm = item.substr(eq + 1);
     const double value = number_from_text(mm);
-    if (!kThickness.contains(value))
-      throw ParameterValueError("'" + item + "': " + mm + " is outside " +
-                                kThickness.describe("mm"));
+    if (!kThickness.contains(value)) {
+      std::string message = "'" + item + "': ";
+      message += mm + " is outside " + kThickness.describe("mm");
+      throw ParameterValueError(message);
+    }
     result[*region] = value;
   }
   return result;

@@ -33,7 +33,7 @@ std::vector<Eigen::Vector3d> points_from_text(const std::string& text) {
 // Three positive factors within `range` (stretches, proportions).
 Eigen::Vector3d factors_from_text(const std::string& text, const NumberRange& range,
                                   const std::string& unit) {
-  const Eigen::Vector3d f = point_from_text(text);
+  Eigen::Vector3d f = point_from_text(text);
   for (int k = 0; k < 3; ++k)
     if (!range.contains(f(k))) throw_out_of_range(format_number(f(k)), range, unit);
   return f;

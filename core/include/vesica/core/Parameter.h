@@ -15,6 +15,7 @@
 
 namespace vesica {
 
+// NOLINTNEXTLINE(bugprone-exception-escape): the check counts nlohmann::json's noexcept move
 struct Parameter {
   enum class Kind {
     Number,   // finite real within `range`

@@ -74,6 +74,12 @@ class ParameterTable {
   void keep_alive(std::shared_ptr<const void> owner) { owner_ = std::move(owner); }
 
  private:
+  static Parameter entry(const std::string& name, Parameter::Kind kind, const std::string& unit,
+                         const std::string& help);
+  template <class Field, class Parse>
+  Parameter& numeric(const std::string& name, Parameter::Kind kind, Field& field,
+                     const std::string& unit, const NumberRange& range, const std::string& help,
+                     Parse parse);
   Parameter& add(Parameter parameter);
 
   std::string tool_;
@@ -99,16 +105,19 @@ ParameterTable table_with_defaults(ParameterTable (*build)(Settings&)) {
 template <class Int>
 Parameter& ParameterTable::integer(const std::string& name, Int& field, const std::string& unit,
                                    const NumberRange& range, const std::string& help) {
-  Parameter p;
-  p.name = name;
-  p.kind = Parameter::Kind::Integer;
-  p.unit = unit;
+  return numeric(name, Parameter::Kind::Integer, field, unit, range, help, integer_from_text);
+}
+
+template <class Field, class Parse>
+Parameter& ParameterTable::numeric(const std::string& name, Parameter::Kind kind, Field& field,
+                                   const std::string& unit, const NumberRange& range,
+                                   const std::string& help, Parse parse) {
+  Parameter p = entry(name, kind, unit, help);
   p.range = range;
-  p.help = help;
-  p.assign = [&field, range, unit](const std::string& text) {
-    const long long v = integer_from_text(text);
+  p.assign = [&field, range, unit, parse](const std::string& text) {
+    const auto v = parse(text);
     if (!range.contains(static_cast<double>(v))) throw_out_of_range(text, range, unit);
-    field = static_cast<Int>(v);
+    field = static_cast<Field>(v);
   };
   p.value = [&field] { return nlohmann::json(field); };
   return add(std::move(p));
@@ -118,10 +127,7 @@ template <class Enum>
 Parameter& ParameterTable::choice(const std::string& name, Enum& field,
                                   const std::vector<std::pair<std::string, Enum>>& names,
                                   const std::string& help) {
-  Parameter p;
-  p.name = name;
-  p.kind = Parameter::Kind::Choice;
-  p.help = help;
+  Parameter p = entry(name, Parameter::Kind::Choice, "", help);
   for (const auto& n : names) p.choices.push_back(n.first);
   p.assign = [&field, names](const std::string& text) {
     std::string known;
