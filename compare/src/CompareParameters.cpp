@@ -21,9 +21,9 @@ void add_calibration_entries(CompareOptions& o, ParameterTable& t) {
   t.number("mu_kpa", m.mu_kpa, "kPa",
            NumberRange::at_least(0.1).at_most(100).because("the calibration searches mu there"),
            "shear modulus of the wall the calibration starts from");
-  t.number("k_kpa", m.k_kpa, "kPa",
-           NumberRange::at_least(0.1).at_most(1e6).or_value(0, "1000 mu, following mu"),
-           "bulk modulus of the wall in the calibration");
+  t.number_or_word("k_kpa", m.k_kpa, 0.0, "kPa",
+                   NumberRange::at_least(0.1).at_most(1e6).or_word("auto", "1000 mu, following mu"),
+                   "bulk modulus of the wall in the calibration");
   t.number("thickness_mm", m.thickness_mm, "mm", NumberRange::at_least(0.1).at_most(30),
            "wall thickness in the calibration");
   t.number("start_ml", m.start_ml, "ml", NumberRange::greater_than(0).at_most(5000),

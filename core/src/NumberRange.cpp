@@ -37,6 +37,12 @@ NumberRange& NumberRange::or_value(double value, std::string meaning) {
   return *this;
 }
 
+NumberRange& NumberRange::or_word(std::string word, std::string meaning) {
+  word_ = std::move(word);
+  word_meaning_ = std::move(meaning);
+  return *this;
+}
+
 NumberRange& NumberRange::because(std::string why) {
   why_ = std::move(why);
   return *this;
@@ -58,7 +64,7 @@ std::string NumberRange::meaning_of(double value) const {
 }
 
 std::string NumberRange::describe(const std::string& unit) const {
-  std::string text;
+  std::string text = word_.empty() ? "" : word_ + " (" + word_meaning_ + ") or ";
   for (const auto& s : special_) text += format_number(s.first) + " (" + s.second + ") or ";
   const auto end = [](double v) { return std::isinf(v) ? std::string("inf") : format_number(v); };
   text += (lo_open_ ? "(" : "[") + end(lo_) + ", " + end(hi_) + (hi_open_ ? ")" : "]");
@@ -75,11 +81,14 @@ nlohmann::json NumberRange::to_json() const {
                       {"special", nlohmann::json::array()}};
   for (const auto& s : special_)
     j["special"].push_back({{"value", s.first}, {"meaning", s.second}});
+  if (!word_.empty()) j["word"] = {{"word", word_}, {"meaning", word_meaning_}};
   if (!why_.empty()) j["why"] = why_;
   return j;
 }
 
 std::string format_number(double value) {
+  // Whole numbers in full ("1000000", not "1e+06"), others in their shortest exact form.
+  if (value == std::floor(value) && std::abs(value) < 1e15) return fmt::format("{:.0f}", value);
   return fmt::format("{}", value);
 }
 

@@ -37,6 +37,23 @@ Parameter& ParameterTable::number(const std::string& name, double& field, const 
   return numeric(name, Parameter::Kind::Number, field, unit, range, help, number_from_text);
 }
 
+Parameter& ParameterTable::number_or_word(const std::string& name, double& field, double word_value,
+                                          const std::string& unit, const NumberRange& range,
+                                          const std::string& help) {
+  Parameter& p = number(name, field, unit, range, help);
+  p.assign = [&field, word_value, range, unit, number = p.assign](const std::string& text) {
+    if (text == range.word())
+      field = word_value;
+    else
+      number(text);
+  };
+  p.value = [&field, word_value, word = range.word()] {
+    return field == word_value ? nlohmann::json(word) : nlohmann::json(field);
+  };
+  p.default_value = p.value();
+  return p;
+}
+
 namespace {
 
 // A flag that stores `when_given` when given.

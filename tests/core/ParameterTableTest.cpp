@@ -23,6 +23,7 @@ struct ToySettings {
   std::string unit = "cmh2o";
   std::string columns;
   std::string measured;
+  double k_kpa = 0.0;  // 0 = automatic (the word "auto")
 };
 
 ParameterTable toy_table(ToySettings& s) {
@@ -37,6 +38,8 @@ ParameterTable toy_table(ToySettings& s) {
   t.choice("unit", s.unit, {"cmh2o", "kpa"}, "pressure unit");
   t.text("columns", s.columns, "KEY=NAME,...", "column names");
   t.input("measured", s.measured, "recording");
+  t.number_or_word("k_kpa", s.k_kpa, 0.0, "kPa",
+                   NumberRange::at_least(0.1).at_most(1e6).or_word("auto", "1000 mu"), "bulk");
   return t;
 }
 
@@ -127,6 +130,18 @@ TEST(ParameterTable, DescriptionCarriesUnitRangeAndDefault) {
   EXPECT_EQ(tet["range"]["max"], 50.0);
   EXPECT_EQ(tet["range"]["special"][0]["meaning"], "auto");
   EXPECT_EQ(d["parameters"][5]["choices"], nlohmann::json({"cmh2o", "kpa"}));
+}
+
+TEST(ParameterTable, AWordStandsForTheFieldsSpecialValueAndItsNumberIsRefused) {
+  ToySettings s;
+  ParameterTable t = toy_table(s);
+  EXPECT_EQ(t.values()["k_kpa"], "auto");
+  EXPECT_EQ(t.find("k_kpa")->accepted(), "auto (1000 mu) or [0.1, 1000000] kPa");
+  EXPECT_EQ(refusal(t, "k_kpa", "0"), "0 is outside auto (1000 mu) or [0.1, 1000000] kPa");
+  EXPECT_EQ(refusal(t, "k_kpa", "50"), "");
+  EXPECT_DOUBLE_EQ(s.k_kpa, 50.0);
+  EXPECT_EQ(refusal(t, "k_kpa", "auto"), "");
+  EXPECT_DOUBLE_EQ(s.k_kpa, 0.0);
 }
 
 TEST(ParameterTable, NamingAnEntryTwiceIsAProgrammingError) {
@@ -220,7 +235,7 @@ TEST(ParameterCli, ParametersJsonDescribesTheTable) {
   EXPECT_EQ(r.code, 0) << r.err;
   const auto d = nlohmann::json::parse(r.out);
   EXPECT_EQ(d["tool"], "toy");
-  EXPECT_EQ(d["parameters"].size(), 7u);
+  EXPECT_EQ(d["parameters"].size(), 8u);
 }
 
 TEST(Suggest, AWordCutShortBeforeItsUnitFindsTheKey) {

@@ -33,6 +33,11 @@ class ParameterTable {
 
   Parameter& number(const std::string& name, double& field, const std::string& unit,
                     const NumberRange& range, const std::string& help);
+  // A number in `range`, or the range's word ("auto"), which the field holds as
+  // `word_value` (a value the range excludes, so that the two never mix).
+  Parameter& number_or_word(const std::string& name, double& field, double word_value,
+                            const std::string& unit, const NumberRange& range,
+                            const std::string& help);
   template <class Int>
   Parameter& integer(const std::string& name, Int& field, const std::string& unit,
                      const NumberRange& range, const std::string& help);
