@@ -1,7 +1,8 @@
 # vesica: two commands set everything up.
 #   make demo   install missing Debian packages, build (Release), run the demo pipeline
 #   make test   same set-up, then every test through ctest
-#   make bench  same set-up, then the benchmarks (JSON in build/bench/)
+#   make bench  same set-up, then the benchmarks (JSON in build/bench/, table in
+#               docs/benchmarks.md)
 # Everything is idempotent: a second call installs nothing and rebuilds only what changed.
 
 BUILD_DIR ?= build
@@ -12,7 +13,7 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
-  xvfb xauth chromium snakemake
+  xvfb xauth chromium snakemake python3-meshio
 
 .PHONY: all deps configure build demo test bench format clean
 
@@ -43,11 +44,13 @@ demo: build
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# BENCH="segment surface" runs only those benchmarks (bench/bench_NAME.sh); every run
+# rewrites the table of docs/benchmarks.md.
 bench: build
-	bench/run.sh $(BUILD_DIR)
+	bench/run.sh $(BUILD_DIR) $(BENCH)
 
 format:
-	find core segment surface mesh simulate compare pipelines tests bench \
+	find core io segment surface mesh simulate compare pipelines tests bench \
 	  \( -name '*.h' -o -name '*.cpp' \) -print0 | xargs -0 clang-format -i
 
 clean:

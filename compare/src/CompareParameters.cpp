@@ -60,4 +60,8 @@ ParameterTable parameter_table(CompareOptions& o) {
   return t;
 }
 
+ParameterTable parameter_table() {
+  return table_with_defaults<CompareOptions>(parameter_table);
+}
+
 }  // namespace vesica::compare

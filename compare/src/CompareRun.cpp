@@ -8,12 +8,12 @@
 #include "vesica/compare/CalibrationRun.h"
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/RecordingReader.h"
 #include "vesica/compare/ReportPage.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/io/RecordingReader.h"
 
 namespace vesica::compare {
 namespace {
@@ -58,8 +58,8 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
 int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, char** argv) {
   validate(o);
   StageRecord record("vesica-compare", argc, argv);  // StageRecord drops argv[0] itself
-  ReaderOptions measured_reader;
-  measured_reader.columns = parse_column_map(o.columns);
+  io::ReaderOptions measured_reader;
+  measured_reader.columns = io::parse_column_map(o.columns);
   measured_reader.pressure_unit = o.pressure_unit;
 
   std::unique_ptr<RecordingAnalysis> measured, simulated;
@@ -67,12 +67,12 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
       measured = std::make_unique<RecordingAnalysis>(
-          analyse(read_recording(o.measured, measured_reader), o.artefacts));
+          analyse(io::read_recording(o.measured, measured_reader), o.artefacts));
       record.add_input(o.measured);
     }
     if (!o.simulated.empty()) {
-      simulated =
-          std::make_unique<RecordingAnalysis>(analyse(read_recording(o.simulated), o.artefacts));
+      simulated = std::make_unique<RecordingAnalysis>(
+          analyse(io::read_recording(o.simulated), o.artefacts));
       record.add_input(o.simulated);
     }
   }

@@ -16,8 +16,9 @@
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/core/Units.h"
+#include "vesica/io/MshFile.h"
+#include "vesica/io/VtuFile.h"
 #include "vesica/mesh/BladderMesh.h"
-#include "vesica/mesh/MeshFiles.h"
 #include "vesica/mesh/MeshParameters.h"
 #include "vesica/mesh/MeshQuality.h"
 #include "vesica/mesh/SurfaceReader.h"
@@ -89,11 +90,11 @@ int run(const Paths& o, const MeshSettings& settings, const ParameterTable& tabl
     PhaseTimer timer(record, "mesh");
     mesh = build_bladder_mesh(surface, membrane, cavity, o.input);
   }
-  const std::filesystem::path vtu = vtu_beside(output);
+  const std::filesystem::path vtu = io::vtu_beside(output);
   {
     PhaseTimer timer(record, "write");
-    write_msh(mesh, output);
-    write_vtu(mesh, vtu);
+    io::write_msh(mesh, output);
+    io::write_mesh_vtu(mesh, vtu);
   }
   record.add_output(output);
   record.add_output(vtu);

@@ -79,4 +79,8 @@ ParameterTable parameter_table(MeshSettings& s) {
   return t;
 }
 
+ParameterTable parameter_table() {
+  return table_with_defaults<MeshSettings>(parameter_table);
+}
+
 }  // namespace vesica::mesh

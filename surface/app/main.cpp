@@ -11,6 +11,7 @@
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/surface/SurfaceParameters.h"
+#include "vesica/surface/SurfaceSettings.h"
 #include "vesica/surface/SurfaceStage.h"
 
 namespace {

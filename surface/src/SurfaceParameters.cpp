@@ -3,6 +3,8 @@
 #include <limits>
 #include <sstream>
 
+#include "vesica/surface/SurfaceSettings.h"
+
 namespace vesica::surface {
 namespace {
 
@@ -138,6 +140,10 @@ ParameterTable parameter_table(SurfaceSettings& s) {
   add_region_entries(o.regions, t);
   t.flag("stl_ascii", o.write.stl_ascii, "write ASCII instead of binary STL");
   return t;
+}
+
+ParameterTable parameter_table() {
+  return table_with_defaults<SurfaceSettings>(parameter_table);
 }
 
 }  // namespace vesica::surface

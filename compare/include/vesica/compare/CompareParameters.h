@@ -9,5 +9,7 @@
 namespace vesica::compare {
 
 ParameterTable parameter_table(CompareOptions& options);
+// Bound to default settings of its own (the runner's copy).
+ParameterTable parameter_table();
 
 }  // namespace vesica::compare

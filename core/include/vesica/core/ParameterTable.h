@@ -6,8 +6,8 @@
 // description (`--parameters-json`, the runner's `vesica validate`, docs/parameters.md).
 //
 // A stage declares its table in one function, `ParameterTable parameter_table(Settings&)`,
-// used by its main (bound to the settings it runs with) and by the runner (bound to a
-// default-constructed copy, table_with_defaults()).
+// used by its main (bound to the settings it runs with), and `parameter_table()` for the
+// runner (bound to a default-constructed copy: table_with_defaults()).
 #include <deque>
 #include <functional>
 #include <memory>

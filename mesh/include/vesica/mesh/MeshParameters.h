@@ -18,5 +18,7 @@ struct MeshSettings {
 };
 
 ParameterTable parameter_table(MeshSettings& settings);
+// Bound to default settings of its own (the runner's copy).
+ParameterTable parameter_table();
 
 }  // namespace vesica::mesh

@@ -1,18 +1,19 @@
-#include "vesica/compare/RecordingReader.h"
+#include "vesica/io/RecordingReader.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <optional>
 #include <sstream>
 #include <vector>
 
+#include "LowerCase.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/io/CsvTable.h"
 
-namespace vesica::compare {
+namespace vesica::io {
 namespace {
 
 enum class Quantity { Time, Text, Pressure, Flow, Volume };
@@ -32,46 +33,6 @@ const std::vector<Channel>& channels() {
       {"volume", Quantity::Volume, {}},
   };
   return all;
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
-// Splits one CSV line; double quotes protect commas ("a, b") and "" is a literal quote.
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cells.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cells.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.emplace_back();
-    } else {
-      cells.back() += c;
-    }
-  }
-  for (auto& c : cells) c = trim(c);
-  return cells;
 }
 
 // Factor from a unit (lowercase, "_" or "/" separated) to the channel's clinical unit;
@@ -125,7 +86,7 @@ std::optional<std::string> bracket_unit(const std::string& header) {
   if (open == std::string::npos) return std::nullopt;
   const auto close = header.find_first_of("])", open);
   if (close == std::string::npos) return std::nullopt;
-  std::string u = lower(trim(header.substr(open + 1, close - open - 1)));
+  std::string u = detail::lower_case(trim(header.substr(open + 1, close - open - 1)));
   u.erase(std::remove(u.begin(), u.end(), ' '), u.end());
   return u;
 }
@@ -137,7 +98,7 @@ std::string column_place(const std::string& header) {
 double default_factor(const Channel& ch, const ReaderOptions& options, const std::string& file,
                       const std::string& header) {
   if (ch.quantity != Quantity::Pressure) return 1.0;
-  const auto f = unit_factor(Quantity::Pressure, lower(options.pressure_unit));
+  const auto f = unit_factor(Quantity::Pressure, detail::lower_case(options.pressure_unit));
   if (!f)
     fail(file, column_place(header) + ": unknown pressure unit \"" + options.pressure_unit + "\"",
          unit_hint(Quantity::Pressure));
@@ -148,7 +109,7 @@ double default_factor(const Channel& ch, const ReaderOptions& options, const std
 std::optional<BoundColumn> bind_default(const Channel& ch, const std::vector<std::string>& header,
                                         const ReaderOptions& options, const std::string& file) {
   for (std::size_t i = 0; i < header.size(); ++i) {
-    const std::string h = lower(header[i]);
+    const std::string h = detail::lower_case(header[i]);
     std::vector<std::string> plain = ch.plain_names;
     plain.push_back(ch.key);
     if (const auto bu = bracket_unit(h)) {
@@ -180,7 +141,7 @@ BoundColumn bind_mapped(const Channel& ch, const std::string& name,
                         const std::vector<std::string>& header, const ReaderOptions& options,
                         const std::string& file) {
   for (std::size_t i = 0; i < header.size(); ++i) {
-    if (lower(header[i]) != lower(trim(name))) continue;
+    if (detail::lower_case(header[i]) != detail::lower_case(trim(name))) continue;
     if (ch.quantity == Quantity::Text) return BoundColumn{&ch, i, header[i], 1.0};
     if (const auto bu = bracket_unit(header[i])) {
       const auto f = unit_factor(ch.quantity, *bu);
@@ -189,7 +150,7 @@ BoundColumn bind_mapped(const Channel& ch, const std::string& name,
              unit_hint(ch.quantity));
       return BoundColumn{&ch, i, header[i], *f};
     }
-    const std::string h = lower(header[i]);
+    const std::string h = detail::lower_case(header[i]);
     for (std::size_t p = h.find('_'); p != std::string::npos; p = h.find('_', p + 1))
       if (const auto f = unit_factor(ch.quantity, h.substr(p + 1)))
         return BoundColumn{&ch, i, header[i], *f};
@@ -296,7 +257,7 @@ ColumnMap parse_column_map(const std::string& text) {
     if (trim(item).empty()) continue;
     const auto eq = item.find('=');
     if (eq == std::string::npos) usage_error("--columns: \"" + item + "\" is not KEY=NAME");
-    const std::string key = lower(trim(item.substr(0, eq)));
+    const std::string key = detail::lower_case(trim(item.substr(0, eq)));
     const bool known = std::any_of(channels().begin(), channels().end(),
                                    [&](const Channel& c) { return key == c.key; });
     if (!known)
@@ -309,31 +270,19 @@ ColumnMap parse_column_map(const std::string& text) {
 
 Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& options) {
   const std::string file = csv.string();
-  std::ifstream in(csv);
-  if (!in) fail(file, "cannot open the recording", "check the path");
+  if (!std::filesystem::exists(csv)) fail(file, "cannot open the recording", "check the path");
+  const CsvTable table = read_csv_table(csv);
+  const std::vector<BoundColumn> bound = bind_columns(table.header, options, file);
   Recording r;
   r.source = file;
-  std::vector<BoundColumn> bound;
-  std::size_t header_size = 0;
-  std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
-    const std::string t = trim(text);
-    if (t.empty() || t[0] == '#') continue;
-    const auto cells = split_csv(t);
-    if (bound.empty()) {
-      bound = bind_columns(cells, options, file);
-      header_size = cells.size();
-      continue;
-    }
-    if (cells.size() != header_size)
-      fail(file, "row " + std::to_string(line) + ": " + std::to_string(cells.size()) +
-                     " cells, the header has " + std::to_string(header_size));
-    r.line.push_back(line);
-    for (const auto& b : bound) read_cell(b, cells[b.index], line, file, r);
-  }
-  if (bound.empty()) fail(file, "no header row", "the first non-comment line names the columns");
-  if (r.rows() < 2) fail(file, "fewer than two data rows");
+  r.line = table.line;
+  for (std::size_t row = 0; row < table.row_count(); ++row)
+    for (const auto& b : bound) read_cell(b, table.rows[row][b.index], table.line[row], file, r);
+  if (r.rows() < options.min_rows)
+    fail(file, options.min_rows == 2
+                   ? "fewer than two data rows"
+                   : "fewer than " + std::to_string(options.min_rows) + " data rows");
   return r;
 }
 
-}  // namespace vesica::compare
+}  // namespace vesica::io

@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 
 #include "TestData.h"
-#include "vesica/compare/RecordingReader.h"
 #include "vesica/core/Error.h"
+#include "vesica/io/RecordingReader.h"
 
-namespace vc = vesica::compare;
+namespace vc = vesica::io;
 namespace fs = std::filesystem;
 
 namespace {
@@ -134,4 +134,15 @@ TEST(RecordingReader, UnknownUnitNamesColumn) {
 TEST(RecordingReader, ShortRowIsNamed) {
   const auto m = error_of("reader-short", "time_s,pdet_cmh2o,infused_ml\n0,1,0\n1,2\n");
   EXPECT_NE(m.find("row 3: 2 cells"), std::string::npos) << m;
+}
+
+// Spreadsheet programs save "CSV UTF-8" with a byte-order mark before the header.
+TEST(RecordingReader, ByteOrderMarkOfASpreadsheetExportIsIgnored) {
+  const auto p =
+      write_csv("reader-bom", "\xEF\xBB\xBFtime_s,pdet_cmh2o,infused_ml\n0,1,0\n10,2,50\n");
+  const auto r = vc::read_recording(p);
+  ASSERT_EQ(r.rows(), 2u);
+  EXPECT_DOUBLE_EQ(r.time_s[1], 10);
+  EXPECT_DOUBLE_EQ(r.pdet_recorded_cmh2o[1], 2);
+  EXPECT_DOUBLE_EQ(r.infused_ml[1], 50);
 }

@@ -1,4 +1,4 @@
-#include "GmshSession.h"
+#include "vesica/io/GmshSession.h"
 
 #include <gmsh.h>
 
@@ -6,7 +6,7 @@
 
 #include "vesica/core/Log.h"
 
-namespace vesica::mesh {
+namespace vesica::io {
 
 GmshSession::GmshSession() {
   // readConfigFiles=false: a user's ~/.gmshrc must not change our meshes.
@@ -40,4 +40,4 @@ std::string GmshSession::flush_log() {
   return last_error;
 }
 
-}  // namespace vesica::mesh
+}  // namespace vesica::io

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <string>
 
-namespace vesica::mesh {
+namespace vesica::io {
 
 class GmshSession {
  public:
@@ -22,4 +22,4 @@ class GmshSession {
   std::size_t forwarded_ = 0;  // gmsh's log buffer only grows; lines already sent
 };
 
-}  // namespace vesica::mesh
+}  // namespace vesica::io

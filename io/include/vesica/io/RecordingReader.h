@@ -1,7 +1,8 @@
 #pragma once
-// Reads a urodynamic recording from CSV: a header row, '#' comment lines, one row per
-// sample. Measured recordings (any column names, mapped with ColumnMap) and the
-// simulation's history.csv go through the same code.
+// Reads a urodynamic recording from CSV (the table rules of CsvTable.h: header row, '#'
+// comment lines, a UTF-8 byte-order mark ignored), one row per sample, in clinical units
+// (s, cmH2O, ml/s, ml). Measured recordings (any column names, mapped with ColumnMap) and
+// the simulation's history.csv (HistoryCsv.h) go through the same code.
 //
 // Channels (keys) and the column names tried when the key is not mapped:
 //   time    time_s, time_min, time            seconds, minutes, or mm:ss / hh:mm:ss cells
@@ -18,11 +19,12 @@
 // Errors (vesica::Error) name the file, the row (1-based file line) and the column.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
-#include "vesica/compare/Recording.h"
+#include "vesica/io/Recording.h"
 
-namespace vesica::compare {
+namespace vesica::io {
 
 // key (time, event, pves, pabd, pdet, flow, voided, infused, volume) -> column name
 using ColumnMap = std::map<std::string, std::string>;
@@ -33,6 +35,7 @@ ColumnMap parse_column_map(const std::string& text);
 struct ReaderOptions {
   ColumnMap columns;
   std::string pressure_unit = "cmh2o";  // for pressure columns without a unit
+  std::size_t min_rows = 2;             // fewer data rows are an error
 };
 
 Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& options = {});
@@ -40,4 +43,4 @@ Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& 
 // Parses one time cell ("06:20", "1:02:03", "380.5") into seconds; nullopt if malformed.
 std::optional<double> parse_clock_time(const std::string& cell);
 
-}  // namespace vesica::compare
+}  // namespace vesica::io

@@ -1,8 +1,8 @@
-#include "vesica/compare/Recording.h"
+#include "vesica/io/Recording.h"
 
 #include <algorithm>
 
-namespace vesica::compare {
+namespace vesica::io {
 
 bool Recording::has_pdet() const {
   return !pdet_recorded_cmh2o.empty() || (!pves_cmh2o.empty() && !pabd_cmh2o.empty());
@@ -32,4 +32,4 @@ std::vector<double> Recording::voided_or_integrated_ml() const {
   return v;
 }
 
-}  // namespace vesica::compare
+}  // namespace vesica::io
