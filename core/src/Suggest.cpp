@@ -1,9 +1,20 @@
-#include "vesica/pipelines/Suggest.h"
+#include "vesica/core/Suggest.h"
 
 #include <algorithm>
 #include <numeric>
 
-namespace vesica::pipelines {
+namespace vesica {
+namespace {
+
+// "mu" is "mu_kpa" (or "mu-kpa") without its unit: the candidate continues the word
+// after a separator.
+bool cut_short(const std::string& word, const std::string& candidate) {
+  return !word.empty() && candidate.size() > word.size() + 1 &&
+         candidate.compare(0, word.size(), word) == 0 &&
+         (candidate[word.size()] == '_' || candidate[word.size()] == '-');
+}
+
+}  // namespace
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> row(b.size() + 1);
@@ -33,7 +44,12 @@ std::string closest_match(const std::string& word, const std::vector<std::string
   // A third of the word's letters (at least one, at most three) may differ: beyond that
   // the suggestion is more confusing than helpful.
   const std::size_t allowed = std::clamp<std::size_t>(word.size() / 3, 1, 3);
-  return best_distance <= allowed ? best : std::string();
+  if (best_distance <= allowed) return best;
+  // Else the shortest candidate the word is a cut-short form of.
+  std::string shortest;
+  for (const auto& c : candidates)
+    if (cut_short(word, c) && (shortest.empty() || c.size() < shortest.size())) shortest = c;
+  return shortest;
 }
 
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates) {
@@ -41,4 +57,4 @@ std::string did_you_mean(const std::string& word, const std::vector<std::string>
   return m.empty() ? std::string() : " (did you mean '" + m + "'?)";
 }
 
-}  // namespace vesica::pipelines
+}  // namespace vesica
