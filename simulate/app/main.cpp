@@ -169,6 +169,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--urine-viscosity-pa-s", c.run.level2.urine_viscosity, "level 2: urine viscosity")
       ->capture_default_str();
+  app.add_option("--linear-solver", c.run.level2.linear_solver,
+                 "level 2: krylov (GMRES on a reused LU) or direct (an LU every iteration)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, Level2LinearSolver>{{"krylov", Level2LinearSolver::Krylov},
+                                                    {"direct", Level2LinearSolver::Direct}}))
+      ->capture_default_str();
   app.add_flag("--no-series", c.no_series, "do not write the .pvd/.vtu series");
   add_common_options(app, common);
 

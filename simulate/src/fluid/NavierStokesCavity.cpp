@@ -19,8 +19,10 @@
 namespace vesica::simulate::fluid {
 namespace {
 
-// Below this radius ratio the ALE mesh is rebuilt (docs/navier-stokes.md §1).
+// Below this radius ratio the ALE mesh is rebuilt (docs/navier-stokes.md §1), with the
+// tetrahedron count of the mesh read within this fraction.
 constexpr double kRemeshRadiusRatio = 0.1;
+constexpr double kRemeshCountTolerance = 0.1;
 // Cut-backs of a failed step (each halves it), and frames while voiding.
 constexpr int kMaxCutbacks = 5;
 constexpr double kVoidFrameIntervalS = 0.5;
@@ -72,7 +74,8 @@ NavierStokesCavity::NavierStokesCavity(const WallModel& wall, const FluidMesh& u
   fluid_.density = settings.urine_density;
   fluid_.viscosity = options.level2.urine_viscosity;
   fluid_.gravity = gravity_;
-  coupling_ = std::make_unique<FluidWallCoupling>(problem_, urine, fluid_, options.level2.newton);
+  coupling_ = std::make_unique<FluidWallCoupling>(problem_, urine, fluid_, options.level2.newton,
+                                                  options.level2.linear_solver);
   built_quality_ = mesh_quality();
   initial_tets_ = urine.tets.size();
   initial_nodes_ = urine.nodes.size();
@@ -165,8 +168,15 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   const auto start = std::chrono::steady_clock::now();
   inflow_.flow_rate = step.inflow_m3_s;
   const WallLoads loads = step_loads(step);
-  const NewtonReport r =
-      coupling_->step(step.dt_s, loads, step.inflow_m3_s > 0.0 ? inflow_ : Inflow{});
+  const Inflow inflow = step.inflow_m3_s > 0.0 ? inflow_ : Inflow{};
+  NewtonReport r = coupling_->step(step.dt_s, loads, inflow);
+  // The wall moved further than the tetrahedra can follow: new ones from the wall where
+  // the step started, and the same step again (before any cut-back).
+  if (!r.converged && r.failure == kInvertedTet &&
+      remesh(step.end_time_s - step.dt_s, mesh_quality())) {
+    statistics_.iterations += r.iterations;
+    r = coupling_->step(step.dt_s, loads, inflow);
+  }
   step_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   statistics_.iterations += r.iterations;
   StepResult result;
@@ -217,24 +227,32 @@ void NavierStokesCavity::check_mesh(double time_s) {
   min_quality_ = std::min(min_quality_, q);
   const double threshold =
       built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
-  // Not while the urethra is open: on a patient bladder, voiding after a remesh stalled
-  // in failing Newton attempts (the new mesh's outlet region is coarser than the flow
-  // through it); the voiding meshes so far keep their quality above zero.
-  if (remesh_failed_ || q >= threshold || coupling_->outlet_open()) return;
+  if (q >= threshold) return;
+  remesh(time_s, q);
+}
+
+// Size-matched: as many tetrahedra as the mesh read had (kRemeshCountTolerance). A wall
+// gmsh cannot mesh keeps the old tetrahedra with a note; the next remesh is tried only
+// once the quality has fallen to half of that attempt's, so that such a wall does not
+// cost a failed gmsh run at every step.
+bool NavierStokesCavity::remesh(double time_s, double quality) {
+  if (quality >= failed_remesh_quality_) return false;
   try {
-    const int tets = coupling_->remesh();
+    const int tets = coupling_->remesh_matched(initial_tets_, kRemeshCountTolerance);
     ++remeshes_;
     built_quality_ = mesh_quality();
+    failed_remesh_quality_ = INFINITY;
     vesica::log()->info(
         "level 2: urine remeshed at t = {} s (radius ratio {:.3f} -> {:.3f}, {} tetrahedra)",
-        time_s, q, built_quality_, tets);
+        time_s, quality, built_quality_, tets);
+    return true;
   } catch (const std::exception& e) {
-    // The old tetrahedra stay; no retry, so that a wall gmsh cannot mesh (e.g. folded
-    // into itself) does not cost a failed gmsh run at every step.
-    remesh_failed_ = true;
-    notes_.push_back("urine remeshing failed at radius ratio " + std::to_string(q) + " (" +
-                     e.what() + "); the degraded tetrahedra stay");
+    failed_remesh_quality_ = 0.5 * quality;
+    notes_.push_back("urine remeshing failed at t = " + std::to_string(time_s) +
+                     " s, radius ratio " + std::to_string(quality) + " (" + e.what() +
+                     "); the degraded tetrahedra stay");
     vesica::log()->warn("{}", notes_.back());
+    return false;
   }
 }
 
@@ -290,6 +308,7 @@ std::vector<std::string> NavierStokesCavity::take_notes() {
 nlohmann::json NavierStokesCavity::statistics() const {
   nlohmann::json s = statistics_.json();
   s["seconds_per_step"] = statistics_.steps ? step_seconds_ / statistics_.steps : 0.0;
+  s["linear_solver"] = coupling_->linear_solver_statistics();
   return s;
 }
 

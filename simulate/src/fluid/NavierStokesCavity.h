@@ -14,6 +14,7 @@
 // and the summary keys level, tetrahedra, max_velocity_mm_s, max_wall_shear_pa,
 // min_tet_radius_ratio, remeshes, newton.seconds_per_step, time_steps_s.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -67,6 +68,7 @@ class NavierStokesCavity final : public CavityModel {
   void open_urethra(const UrethraLaw& urethra, double time_s);
   double mesh_quality() const;
   void check_mesh(double time_s);
+  bool remesh(double time_s, double quality);  // true when the tetrahedra were rebuilt
   void update_max_speed();
   std::vector<Eigen::Vector3d> nodal_wall_shear(const FluidMesh& now) const;
 
@@ -91,7 +93,8 @@ class NavierStokesCavity final : public CavityModel {
   StepStatistics statistics_;
   int remeshes_ = 0;
   std::size_t initial_tets_ = 0, initial_nodes_ = 0;
-  bool remesh_failed_ = false;
+  // Quality below which a remesh is tried (INFINITY: any); after a failed one, half of its.
+  double failed_remesh_quality_ = INFINITY;
 };
 
 // The urine tetrahedra in the wall's reference state. `imaged`: as read (read_urine), its
