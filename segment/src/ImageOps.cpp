@@ -135,7 +135,7 @@ Float::RegionType region_around(const Float& image, const Float::PointType& cent
 }
 
 // Resamples onto an isotropic grid of `spacing` covering the same physical box.
-Float::Pointer resample_isotropic(const Float& image, double spacing) {
+Float::Pointer resample_isotropic(const Float& image, double spacing, double outside) {
   using Image = Float;
   auto f = itk::ResampleImageFilter<Image, Image>::New();
   f->SetInput(&image);
@@ -160,7 +160,7 @@ Float::Pointer resample_isotropic(const Float& image, double spacing) {
   f->SetOutputSpacing(s);
   f->SetOutputOrigin(origin);
   f->SetOutputDirection(image.GetDirection());
-  f->SetDefaultPixelValue(-1000);
+  f->SetDefaultPixelValue(static_cast<float>(outside));
   f->Update();
   return f->GetOutput();
 }
@@ -210,8 +210,7 @@ Float::Pointer signed_distance(const Mask& m) {
   return f->GetOutput();
 }
 
-// Median of `image` where `where` is set (NaN when empty).
-double median_where(const Float& image, const Mask& where) {
+double percentile_where(const Float& image, const Mask& where, double percent) {
   std::vector<float> v;
   const auto* w = where.GetBufferPointer();
   const auto* x = image.GetBufferPointer();
@@ -219,8 +218,15 @@ double median_where(const Float& image, const Mask& where) {
   for (std::size_t i = 0; i < n; ++i)
     if (w[i]) v.push_back(x[i]);
   if (v.empty()) return std::nan("");
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
+  const auto k =
+      std::min(v.size() - 1, static_cast<std::size_t>(std::clamp(percent, 0.0, 100.0) / 100.0 *
+                                                      static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+double median_where(const Float& image, const Mask& where) {
+  return percentile_where(image, where, 50.0);
 }
 
 Float::RegionType region_covering(const Float& image, const Mask& mask, double margin_mm) {
