@@ -112,7 +112,7 @@ SegmentResult segment_bladder(const ScanImage& image, const SegmentParams& p,
   const double ml = count(*r.label) * voxel_ml(*r.label);
   if (ml < p.min_volume_ml) {
     std::ostringstream m;
-    m.precision(3);
+    m.precision(4);
     m << "the segmented bladder holds only " << ml << " ml (less than --min-volume-ml "
       << p.min_volume_ml << ")";
     fail(source, m.str(), "check --seed (LPS mm): it may lie outside the bladder");

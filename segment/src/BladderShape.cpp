@@ -1,5 +1,6 @@
 #include "vesica/segment/BladderShape.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vesica::segment {
@@ -113,6 +114,28 @@ bool BladderShape::inside(const std::array<double, 3>& p, double grow_mm) const 
     sum += d * d;
   }
   return sum <= 1;
+}
+
+int BladderShape::layer(const std::array<double, 3>& p, const double* grows, int count) const {
+  if (count == 0) return 0;
+  // Outside the ball that holds the shape grown by the largest distance there is no layer
+  // (most of a phantom lies there). A distance-like field grown by g reaches at most
+  // g * largest / smallest semi-axis beyond the shape.
+  const auto [lo, hi] = std::minmax({semi_axes_mm_[0], semi_axes_mm_[1], semi_axes_mm_[2]});
+  const double reach =
+      std::max(hi, spec_.center_mm[2] - lowest_z_mm()) + grows[count - 1] * hi / lo + 1.0;
+  double r2 = 0;
+  for (int i = 0; i < 3; ++i) r2 += (p[i] - spec_.center_mm[i]) * (p[i] - spec_.center_mm[i]);
+  if (r2 > reach * reach) return count;
+  if (spec_.shape == PhantomShape::Pouch) {
+    const double level = pouch_level(p);
+    for (int k = 0; k < count; ++k)
+      if (level <= grows[k]) return k;
+    return count;
+  }
+  for (int k = 0; k < count; ++k)
+    if (inside(p, grows[k])) return k;
+  return count;
 }
 
 double BladderShape::lowest_z_mm() const {

@@ -36,22 +36,21 @@ bool long_length_vr(const char* vr) {
   fail(file.string(), "truncated or corrupt DICOM file (" + what + ")", "export the series again");
 }
 
-// Walks group 0002 from offset 132: tag, VR, length, value, each inside the file.
+// Walks group 0002 from offset 132: tag, VR, length, value, each inside the file, and the
+// data set must follow it. FileMetaInformationGroupLength (0002,0000), when present, says
+// where the group ends.
 void walk_meta_group(std::ifstream& in, const std::filesystem::path& file, std::uintmax_t size) {
-  std::uintmax_t at = kMetaStart;
-  std::uint32_t elements = 0;
-  for (;;) {
+  std::uintmax_t at = kMetaStart, group_end = 0;
+  for (std::uint32_t elements = 0;; ++elements) {
+    if (group_end && at >= group_end) break;
     unsigned char head[12];
-    if (at + 8 > size) {
-      if (elements == 0) cut_short(file, "no file meta information after the DICM marker");
-      return;  // a file holding only its meta header has no image; GDCM can say so
-    }
+    if (at + 8 > size) cut_short(file, "nothing after the file meta information");
     in.seekg(static_cast<std::streamoff>(at));
     in.read(reinterpret_cast<char*>(head), 8);
     if (!in) cut_short(file, "unreadable file meta information");
     if (u16(head) != 0x0002) {
       if (elements == 0) cut_short(file, "file meta information missing");
-      return;  // the data set starts here
+      break;  // the data set starts here
     }
     const char vr[2] = {static_cast<char>(head[4]), static_cast<char>(head[5])};
     if (!std::isupper(static_cast<unsigned char>(vr[0])) ||
@@ -68,9 +67,17 @@ void walk_meta_group(std::ifstream& in, const std::filesystem::path& file, std::
     }
     if (length > kMaxMetaLength || value_at + length > size)
       cut_short(file, "file meta information cut short");
+    if (u16(head + 2) == 0x0000 && length == 4) {  // the group's own length
+      unsigned char v[4];
+      in.seekg(static_cast<std::streamoff>(value_at));
+      in.read(reinterpret_cast<char*>(v), 4);
+      if (!in || u32(v) > kMaxMetaLength) cut_short(file, "bad file meta information length");
+      group_end = value_at + 4 + u32(v);
+    }
     at = value_at + length;
-    ++elements;
   }
+  if (group_end && at != group_end) cut_short(file, "file meta information length mismatch");
+  if (at + 8 > size) cut_short(file, "nothing after the file meta information");
 }
 
 }  // namespace

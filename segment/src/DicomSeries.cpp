@@ -24,7 +24,12 @@ namespace {
 const gdcm::Tag kSeriesUid(0x0020, 0x000e), kModality(0x0008, 0x0060), kDescription(0x0008, 0x103e),
     kPosition(0x0020, 0x0032), kOrientation(0x0020, 0x0037), kRows(0x0028, 0x0010),
     kColumns(0x0028, 0x0011), kPixelSpacing(0x0028, 0x0030), kSamples(0x0028, 0x0002),
-    kBitsAllocated(0x0028, 0x0100), kPixelRepresentation(0x0028, 0x0103), kEchoTime(0x0018, 0x0081);
+    kBitsAllocated(0x0028, 0x0100), kPixelRepresentation(0x0028, 0x0103), kEchoTime(0x0018, 0x0081),
+    kSopClass(0x0008, 0x0016);
+
+// CT and MR Image Storage: files of these classes always carry image geometry.
+const char* const kCtImageStorage = "1.2.840.10008.5.1.4.1.1.2";
+const char* const kMrImageStorage = "1.2.840.10008.5.1.4.1.1.4";
 
 std::string trimmed(const char* value) {
   std::string s = value ? value : "";
@@ -91,7 +96,13 @@ void mark(DicomSeries& series, const std::string& file, const std::string& probl
 void add_slice(const gdcm::Scanner& scanner, const std::string& file, DicomSeries& series) {
   const auto pos = numbers(value(scanner, file, kPosition));
   const auto ori = numbers(value(scanner, file, kOrientation));
-  if (pos.empty() && ori.empty()) return;
+  if (pos.empty() && ori.empty()) {
+    const std::string sop = value(scanner, file, kSopClass);
+    if (sop == kCtImageStorage || sop == kMrImageStorage)  // cut short before its geometry
+      fail(file, "CT/MR image without ImagePositionPatient (truncated or corrupt file)",
+           "export the series again");
+    return;
+  }
   if (pos.size() != 3 || ori.size() != 6 || !all_finite(pos) || !all_finite(ori))
     return mark(series, file, "ImagePositionPatient or ImageOrientationPatient is not finite");
   DicomSlice s;
@@ -250,11 +261,14 @@ std::vector<DicomSeries> scan_dicom_folder(const std::filesystem::path& folder) 
   if (files.empty())
     fail(folder.string(), "folder is empty", "expected the DICOM files of one CT or MR series");
   std::sort(files.begin(), files.end());
+  // GDCM prints its own multi-line complaints about odd files; vesica says one line.
   gdcm::Trace::WarningOff();
+  gdcm::Trace::ErrorOff();
+  gdcm::Trace::DebugOff();
   gdcm::Scanner scanner;
   for (const auto& tag :
        {kSeriesUid, kModality, kDescription, kPosition, kOrientation, kRows, kColumns,
-        kPixelSpacing, kSamples, kBitsAllocated, kPixelRepresentation, kEchoTime})
+        kPixelSpacing, kSamples, kBitsAllocated, kPixelRepresentation, kEchoTime, kSopClass})
     scanner.AddTag(tag);
   scanner.Scan(files);
   std::map<std::string, DicomSeries> by_uid;

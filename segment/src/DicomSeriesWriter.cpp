@@ -7,7 +7,10 @@
 #include <sstream>
 #include <vector>
 
+#include <gdcmAttribute.h>
+#include <gdcmReader.h>
 #include <gdcmUIDGenerator.h>
+#include <gdcmWriter.h>
 #include <itkCastImageFilter.h>
 #include <itkGDCMImageIO.h>
 #include <itkImageSeriesWriter.h>
@@ -37,6 +40,23 @@ StoredImage::Pointer rounded(const ScanImage& image, Modality modality) {
   for (std::size_t i = 0; i < n; ++i)
     dst[i] = static_cast<short>(std::clamp(std::round(static_cast<double>(in[i])), lo, hi));
   return out;
+}
+
+// GDCM writes an MR slice's SpacingBetweenSlices from the spacing of the 2-D image it is
+// given (always 1 mm), over the value in the dictionary; so the true one is set after.
+void set_spacing_between_slices(const std::vector<std::string>& files, double spacing_mm) {
+  for (const auto& f : files) {
+    gdcm::Reader reader;
+    reader.SetFileName(f.c_str());
+    if (!reader.Read()) fail(f, "cannot read back the DICOM file just written");
+    gdcm::Attribute<0x0018, 0x0088> at;
+    at.SetValue(spacing_mm);
+    reader.GetFile().GetDataSet().Replace(at.GetAsDataElement());
+    gdcm::Writer writer;
+    writer.SetFileName(f.c_str());
+    writer.SetFile(reader.GetFile());
+    if (!writer.Write()) fail(f, "cannot write DICOM file");
+  }
 }
 
 }  // namespace
@@ -123,9 +143,10 @@ DicomSeriesInfo write_dicom_series(const ScanImage& image, const std::filesystem
   writer->SetMetaDataDictionaryArray(&dictionaries);
   try {
     writer->Update();
-  } catch (const itk::ExceptionObject& e) {
-    fail(dir.string(), std::string("cannot write DICOM series: ") + e.GetDescription());
+  } catch (const itk::ExceptionObject&) {
+    fail(dir.string(), "cannot write DICOM series");
   }
+  if (!ct) set_spacing_between_slices(names, s[2]);
   return info;
 }
 

@@ -1,8 +1,10 @@
 #include "NiftiCheck.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -21,20 +23,55 @@ bool finite(std::initializer_list<double> values) {
   return true;
 }
 
-// The bytes the file holds from its start (decompressed for .nii.gz), up to `wanted`.
-std::uint64_t readable_bytes(const std::filesystem::path& file, std::uint64_t wanted) {
+// What the file's data holds: its length from the file's start (decompressed for
+// .nii.gz), up to `wanted`, and how many of its float voxels are NaN or infinite.
+struct DataScan {
+  std::uint64_t bytes = 0;
+  std::uint64_t non_finite = 0;
+};
+
+template <class T>
+std::uint64_t count_non_finite(const char* data, std::size_t n, bool swapped) {
+  std::uint64_t bad = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    char raw[sizeof(T)];
+    std::memcpy(raw, data + i * sizeof(T), sizeof(T));
+    if (swapped) std::reverse(raw, raw + sizeof(T));
+    T v;
+    std::memcpy(&v, raw, sizeof(T));
+    if (!std::isfinite(v)) ++bad;
+  }
+  return bad;
+}
+
+// ITK's reader turns NaN voxels into 0 (which CT would read as urine), so float data is
+// checked here, as it streams past.
+DataScan scan_data(const std::filesystem::path& file, const nifti_1_header& h, bool swapped,
+                   std::uint64_t wanted) {
   const std::string name = file.string();
   znzFile f = znzopen(name.c_str(), "rb", nifti_is_gzfile(name.c_str()));
-  if (znz_isnull(f)) return 0;
+  DataScan scan;
+  if (znz_isnull(f)) return scan;
+  const auto start = static_cast<std::uint64_t>(h.vox_offset);
+  const std::size_t element = h.datatype == DT_FLOAT32 ? 4 : h.datatype == DT_FLOAT64 ? 8 : 0;
   std::vector<char> buffer(1 << 20);
-  std::uint64_t total = 0;
-  while (total < wanted) {
+  std::vector<char> data;  // bytes past vox_offset not yet checked (a partial element)
+  while (scan.bytes < wanted) {
     const std::size_t n = znzread(buffer.data(), 1, buffer.size(), f);
     if (n == 0) break;
-    total += n;
+    const std::uint64_t from = scan.bytes;
+    scan.bytes += n;
+    if (element == 0 || scan.bytes <= start) continue;
+    const std::size_t skip = from < start ? static_cast<std::size_t>(start - from) : 0;
+    data.insert(data.end(), buffer.begin() + static_cast<std::ptrdiff_t>(skip),
+                buffer.begin() + static_cast<std::ptrdiff_t>(n));
+    const std::size_t whole = data.size() / element;
+    scan.non_finite += element == 4 ? count_non_finite<float>(data.data(), whole, swapped)
+                                    : count_non_finite<double>(data.data(), whole, swapped);
+    data.erase(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(whole * element));
   }
   znzclose(f);
-  return total;
+  return scan;
 }
 
 void check_geometry(const nifti_1_header& h, const std::string& file) {
@@ -83,12 +120,15 @@ void check_nifti_file(const std::filesystem::path& file) {
   // ITK zero-fills what a short file lacks; the data must be there in full.
   const std::uint64_t needed =
       static_cast<std::uint64_t>(h.vox_offset) + voxels * static_cast<std::uint64_t>(h.bitpix / 8);
-  const std::uint64_t have = readable_bytes(file, needed);
-  if (have < needed)
+  const DataScan data = scan_data(file, h, swapped != 0, needed);
+  if (data.bytes < needed)
     fail(name,
          "truncated: the header declares " + std::to_string(needed) + " bytes, the file holds " +
-             std::to_string(have),
+             std::to_string(data.bytes),
          "the file was cut short (an interrupted copy or download?)");
+  if (data.non_finite > 0)
+    fail(name, std::to_string(data.non_finite) + " voxels are not finite numbers (NaN or infinite)",
+         "the volume is corrupt; export it again");
 }
 
 }  // namespace vesica::segment

@@ -41,10 +41,17 @@ struct Anatomy {
 
   // Order matters: the bladder, its wall and its fat override the rest.
   Tissue tissue(double x, double y, double z) const {
-    const std::array<double, 3> p = {x, y, z};
-    if (bladder.inside(p)) return Tissue::Urine;
-    if (wall_mm > 0 && bladder.inside(p, wall_mm)) return Tissue::BladderWall;
-    if (bladder.inside(p, wall_mm + kFatShellMm)) return Tissue::Fat;
+    const double grows[3] = {0.0, wall_mm, wall_mm + kFatShellMm};
+    switch (bladder.layer({x, y, z}, grows, 3)) {
+      case 0:
+        return Tissue::Urine;
+      case 1:
+        return Tissue::BladderWall;
+      case 2:
+        return Tissue::Fat;
+      default:
+        break;
+    }
     const double body = x * x / (170.0 * 170.0) + (y - 10) * (y - 10) / (125.0 * 125.0);
     if (body > 1) return Tissue::Air;
     const double rr = x * x + (y - rectum_y) * (y - rectum_y);
@@ -133,11 +140,52 @@ Sampling sampling_of(const ScanImage& image) {
   return out;
 }
 
+// The tissues at the uniformity probes of one slice of voxels: a lattice on the voxels'
+// faces, shared by neighbouring voxels (each probe is evaluated once, not once per voxel).
+class SliceProbes {
+ public:
+  SliceProbes(const Anatomy& anatomy, const ScanImage& image, const Sampling& sampling,
+              itk::IndexValueType k)
+      : m_(sampling.corners) {
+    const auto size = image.GetLargestPossibleRegion().GetSize();
+    nx_ = static_cast<std::size_t>(size[0]) * m_[0] + 1;
+    ny_ = static_cast<std::size_t>(size[1]) * m_[1] + 1;
+    tissues_.resize(nx_ * ny_ * (m_[2] + 1));
+    std::size_t n = 0;
+    for (int t = 0; t <= m_[2]; ++t)
+      for (std::size_t y = 0; y < ny_; ++y)
+        for (std::size_t x = 0; x < nx_; ++x) {
+          itk::ContinuousIndex<double, 3> c;
+          c[0] = double(x) / m_[0] - 0.5;
+          c[1] = double(y) / m_[1] - 0.5;
+          c[2] = double(k) - 0.5 + double(t) / m_[2];
+          ScanImage::PointType p;
+          image.TransformContinuousIndexToPhysicalPoint(c, p);
+          tissues_[n++] = anatomy.tissue(p[0], p[1], p[2]);
+        }
+  }
+
+  // Whether every probe of voxel (i, j) of this slice reads tissue c.
+  bool uniform(itk::IndexValueType i, itk::IndexValueType j, Tissue c) const {
+    for (int t = 0; t <= m_[2]; ++t)
+      for (int y = 0; y <= m_[1]; ++y)
+        for (int x = 0; x <= m_[0]; ++x)
+          if (tissues_[(t * ny_ + j * m_[1] + y) * nx_ + i * m_[0] + x] != c) return false;
+    return true;
+  }
+
+ private:
+  std::array<int, 3> m_;
+  std::size_t nx_ = 0, ny_ = 0;
+  std::vector<Tissue> tissues_;
+};
+
 // Mean value over one voxel: the centre's tissue value when the centre and the probes on
 // the voxel's faces agree (no border inside), else the mean of sub-samples (partial-volume
 // effect).
 double voxel_value(const Anatomy& anatomy, const std::array<double, kTissueCount>& values,
-                   const Sampling& sampling, const ScanImage& image, const itk::Index<3>& index) {
+                   const Sampling& sampling, const SliceProbes& probes, const ScanImage& image,
+                   const itk::Index<3>& index) {
   const auto& d = image.GetDirection();
   const auto& s = image.GetSpacing();
   ScanImage::PointType centre;
@@ -149,14 +197,7 @@ double voxel_value(const Anatomy& anatomy, const std::array<double, kTissueCount
     return anatomy.tissue(p[0], p[1], p[2]);
   };
   const Tissue c = at(0, 0, 0);
-  const auto& m = sampling.corners;
-  bool uniform = true;
-  for (int i = 0; i <= m[0] && uniform; ++i)
-    for (int j = 0; j <= m[1] && uniform; ++j)
-      for (int k = 0; k <= m[2] && uniform; ++k)
-        uniform =
-            at(-0.5 + double(i) / m[0], -0.5 + double(j) / m[1], -0.5 + double(k) / m[2]) == c;
-  if (uniform) return values[static_cast<int>(c)];
+  if (probes.uniform(index[0], index[1], c)) return values[static_cast<int>(c)];
   const auto& n = sampling.sub;
   double sum = 0;
   for (int i = 0; i < n[0]; ++i)
@@ -236,10 +277,11 @@ ScanImage::Pointer make_phantom(const PhantomSpec& spec) {
   float* buffer = image->GetBufferPointer();
   const std::size_t slice = size[0] * size[1];
   for_each_slice_in_parallel(size[2], [&](itk::IndexValueType k) {
+    const SliceProbes probes(anatomy, *image, sampling, k);
     for (itk::IndexValueType j = 0; j < static_cast<itk::IndexValueType>(size[1]); ++j)
       for (itk::IndexValueType i = 0; i < static_cast<itk::IndexValueType>(size[0]); ++i)
         buffer[k * slice + j * size[0] + i] =
-            static_cast<float>(voxel_value(anatomy, values, sampling, *image, {{i, j, k}}));
+            static_cast<float>(voxel_value(anatomy, values, sampling, probes, *image, {{i, j, k}}));
   });
   if (spec.modality == Modality::MR)
     add_mr_acquisition(spec, *image);

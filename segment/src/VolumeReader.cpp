@@ -87,6 +87,9 @@ void read_volume_file(const std::filesystem::path& input, Volume& v) {
 Volume read_volume(const std::filesystem::path& input, const std::string& series) {
   namespace fs = std::filesystem;
   if (!fs::exists(input)) fail(input.string(), "does not exist");
+  // ITK's warnings (odd headers, non-orthogonal directions) would add lines to stderr;
+  // every problem that matters is reported as vesica's one line instead.
+  itk::Object::GlobalWarningDisplayOff();
   Volume v;
   if (fs::is_directory(input)) {
     const auto all = scan_dicom_folder(input);

@@ -29,6 +29,10 @@ class BladderShape {
   // ellipsoid grow their semi-axes; the pouch its distance-like field.
   bool inside(const std::array<double, 3>& p, double grow_mm = 0.0) const;
 
+  // The first of `count` ascending grow distances whose grown shape holds p, or count
+  // when none does: one evaluation of the shape for all layers (urine, wall, fat).
+  int layer(const std::array<double, 3>& p, const double* grows_mm, int count) const;
+
   double volume_ml() const { return volume_ml_; }  // exact (pouch: integrated, see .cpp)
   const std::array<double, 3>& centroid_mm() const { return centroid_mm_; }
   // Sphere/ellipsoid semi-axes; for the pouch those of its reservoir.
