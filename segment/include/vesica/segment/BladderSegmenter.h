@@ -32,9 +32,9 @@ namespace vesica::segment {
 // MR intensity model. Normalised signal: 1 = the urine level learned at the seed (before
 // the seed is known: 1 = the reference percentile of the bias-corrected image).
 struct MrParams {
-  double bias_spacing_mm = 8.0;        // N4 bias-field correction runs on this grid
+  double bias_spacing_mm = 10.0;       // N4 bias-field correction runs on this grid
   int bias_levels = 3;                 // B-spline fitting levels (control grid doubles each)
-  int bias_iterations = 20;            // per level (N4's cost: points x iterations)
+  int bias_iterations = 10;            // per level (N4's cost: points x iterations)
   double reference_percentile = 99.5;  // of the corrected body signal: urine on T2
   double min_brightness = 0.4;         // the seed's neighbourhood must reach this x reference
   double auto_seed_level = 0.7;        // automatic seeding: compact regions above this
