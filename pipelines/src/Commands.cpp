@@ -39,7 +39,8 @@ Usage:
                                        each stage: fresh, stale or missing, and why
   vesica export --snakemake FILE [--workdir DIR] > Snakefile
                                        the same pipeline as a Snakemake workflow
-  vesica phantom OUT_DIR [args...]     synthetic CT: runs vesica-phantom -o OUT_DIR args...
+  vesica phantom OUT_DIR [args...]     synthetic CT or MR (--modality mr): runs
+                                       vesica-phantom -o OUT_DIR args...
   vesica help | --version
 
 Stage executables vesica-<tool> are looked up beside this program.

@@ -135,3 +135,23 @@ TEST(MrThroughTheTools, AutoSeededPouchFromItsDicomSeries) {
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(stats.centroid_mm[i], truth["bladder_center_mm"][i].get<double>(), 2.0);
 }
+
+// The runner's phantom subcommand passes the MR options through, and the MR demo
+// pipeline is a valid pipeline file (make demo runs the CT one; this one is run by hand).
+TEST(MrDemo, PhantomSubcommandAndPipelineFile) {
+  const auto dir = vesica::test::scratch_dir("segment-mr-demo");
+  ASSERT_EQ(run_tool("vesica",
+                     "phantom " + (dir / "mr").string() +
+                         " --modality mr --spacing-mm 5 --slice-spacing-mm 10 --fov-mm 200,200,150"
+                         " --report " +
+                         (dir / "phantom.json").string(),
+                     dir),
+            0)
+      << read_text(dir / "stderr.txt");
+  const auto report = read_json(dir / "phantom.json");
+  EXPECT_EQ(report["modality"], "MR");
+  EXPECT_EQ(report["slice_count"], 15);
+  const auto file = vesica::test::source_dir() / "pipelines" / "mr-demo.yaml";
+  EXPECT_EQ(run_tool("vesica", "validate " + file.string(), dir), 0)
+      << read_text(dir / "stdout.txt") << read_text(dir / "stderr.txt");
+}
