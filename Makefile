@@ -1,20 +1,29 @@
 # vesica: two commands set everything up.
 #   make demo   install missing Debian packages, build (Release), run the demo pipeline
 #   make test   same set-up, then every test through ctest
-#   make bench  same set-up, then the benchmarks (JSON in build/bench/)
+#   make bench  same set-up, then the benchmarks (JSON in build/bench/, table in
+#               docs/benchmarks.md)
+#   make install [PREFIX=/usr/local]  build, then install executables, libraries, headers,
+#               the CMake package (find_package(vesica)) and the example pipelines
+#   make package  build, then the Debian packages build/vesica_<version>_amd64.deb and
+#               build/vesica-dev_<version>_amd64.deb (CPack)
 # Everything is idempotent: a second call installs nothing and rebuilds only what changed.
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
+PREFIX    ?= /usr/local
 SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
-  xvfb xauth chromium snakemake
+  xvfb xauth chromium snakemake python3-meshio
 
-.PHONY: all deps configure build demo test bench format clean
+# make package: dpkg-shlibdeps computes the Debian package's Depends.
+DEBIAN_PACKAGES += dpkg-dev
+
+.PHONY: all deps configure build demo test bench install package format clean
 
 all: build
 
@@ -43,11 +52,20 @@ demo: build
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# BENCH="segment surface" runs only those benchmarks (bench/bench_NAME.sh); every run
+# rewrites the table of docs/benchmarks.md.
 bench: build
-	bench/run.sh $(BUILD_DIR)
+	bench/run.sh $(BUILD_DIR) $(BENCH)
+
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+package: build
+	cd $(BUILD_DIR) && cpack -G DEB
+	@ls $(BUILD_DIR)/*.deb
 
 format:
-	find core segment surface mesh simulate compare pipelines tests bench \
+	find core io segment surface mesh simulate compare pipelines tests bench \
 	  \( -name '*.h' -o -name '*.cpp' \) -print0 | xargs -0 clang-format -i
 
 clean:

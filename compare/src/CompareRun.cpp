@@ -6,13 +6,14 @@
 #include <optional>
 
 #include "vesica/compare/CalibrationRun.h"
+#include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/RecordingReader.h"
 #include "vesica/compare/ReportPage.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/io/RecordingReader.h"
 
 namespace vesica::compare {
 namespace {
@@ -23,8 +24,6 @@ void validate(const CompareOptions& o) {
   if (o.output.empty()) usage_error("--output is required", "-o REPORTDIR");
   if (o.measured.empty() && o.simulated.empty())
     usage_error("nothing to compare", "give --measured and/or --simulated");
-  if (!o.fit_volume_ml.empty() && !(o.fit_volume_ml[1] > o.fit_volume_ml[0]))
-    usage_error("--fit-volume-ml: LO must be below HI");
   if (!o.calibrate.empty() && (o.measured.empty() || o.mesh.empty()))
     usage_error("--calibrate needs --measured (the curve to fit) and --mesh (the geometry)");
 }
@@ -59,8 +58,8 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
 int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, char** argv) {
   validate(o);
   StageRecord record("vesica-compare", argc, argv);  // StageRecord drops argv[0] itself
-  ReaderOptions measured_reader;
-  measured_reader.columns = parse_column_map(o.columns);
+  io::ReaderOptions measured_reader;
+  measured_reader.columns = io::parse_column_map(o.columns);
   measured_reader.pressure_unit = o.pressure_unit;
 
   std::unique_ptr<RecordingAnalysis> measured, simulated;
@@ -68,12 +67,12 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
       measured = std::make_unique<RecordingAnalysis>(
-          analyse(read_recording(o.measured, measured_reader), o.artefacts));
+          analyse(io::read_recording(o.measured, measured_reader), o.artefacts));
       record.add_input(o.measured);
     }
     if (!o.simulated.empty()) {
-      simulated =
-          std::make_unique<RecordingAnalysis>(analyse(read_recording(o.simulated), o.artefacts));
+      simulated = std::make_unique<RecordingAnalysis>(
+          analyse(io::read_recording(o.simulated), o.artefacts));
       record.add_input(o.simulated);
     }
   }
@@ -120,14 +119,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     record.add_output(out / "index.html");
     record.add_output(out / "metrics.json");
   }
-  record.parameters() = {{"measured", o.measured},
-                         {"simulated", o.simulated},
-                         {"columns", o.columns},
-                         {"pressure_unit", o.pressure_unit},
-                         {"mesh", o.mesh},
-                         {"calibrate", o.calibrate},
-                         {"fit_volume_ml", o.fit_volume_ml},
-                         {"spike_cmh2o", o.artefacts.spike_cmh2o}};
+  CompareOptions bound = o;  // the table reads every parameter's value back for the manifest
+  record.parameters() = parameter_table(bound).values();
   record.summary() = summary_numbers(measured.get(), simulated.get(), comparison,
                                      calibration ? &*calibration : nullptr);
   const auto summary = record.write(common.report, default_manifest_path(common, o.output));

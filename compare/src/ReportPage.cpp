@@ -284,7 +284,7 @@ std::string report_html(const ReportInputs& in) {
   o << "<h1>Urodynamics: model against measurement</h1>\n<p>";
   if (in.measured) o << "Measured: " << xml_escape(in.measured->recording.source) << ". ";
   if (in.simulated) o << "Simulated: " << xml_escape(in.simulated->recording.source) << ". ";
-  o << "Definitions: docs/compare.md (ICS terms, physics.md &sect;7).</p>\n";
+  o << "Definitions: docs/compare.md (ICS terms, docs/physics.md &sect;7).</p>\n";
   o << "<h2>Plots</h2>\n"
     << filling_plot(in) << volume_plot(in) << flow_plot(in) << pressure_flow_plot(in);
   o << "<h2>Parameters</h2>\n" << parameter_table(in);

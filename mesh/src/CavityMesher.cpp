@@ -19,9 +19,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "GmshSession.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
+#include "vesica/io/GmshSession.h"
 
 namespace vesica::mesh {
 
@@ -171,7 +171,7 @@ void require_conforming(const SurfaceMesh& s, const CavityMesh& m, const std::st
 
 CavityMesh mesh_cavity(const SurfaceMesh& surface, const CavityOptions& options,
                        const std::string& origin) {
-  GmshSession session;
+  io::GmshSession session;
   SizeField size(surface, options);
   CavityMesh result;
   try {

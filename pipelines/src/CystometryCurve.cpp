@@ -1,33 +1,11 @@
 #include "vesica/pipelines/CystometryCurve.h"
 
 #include <algorithm>
-#include <fstream>
-#include <map>
-#include <sstream>
-#include <string>
 
-#include "vesica/core/Error.h"
+#include "vesica/io/HistoryCsv.h"
 
 namespace vesica::pipelines {
 namespace {
-
-std::vector<std::string> split_commas(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream s(line);
-  std::string cell;
-  while (std::getline(s, cell, ',')) cells.push_back(cell);
-  return cells;
-}
-
-double parse_cell(const std::string& cell, const std::filesystem::path& csv, std::size_t line) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(cell, &used);
-    if (used == cell.size()) return v;
-  } catch (const std::exception&) {
-  }
-  fail(csv.string(), "line " + std::to_string(line) + ": '" + cell + "' is not a number");
-}
 
 // Linear interpolation of y at x between rows a and b (x between x[a] and x[b]).
 double interpolate(double xa, double xb, double ya, double yb, double x) {
@@ -43,31 +21,13 @@ std::size_t CystometryCurve::filling_end() const {
 }
 
 CystometryCurve read_history_csv(const std::filesystem::path& csv) {
-  std::ifstream in(csv);
-  if (!in) fail(csv.string(), "cannot be read");
-  std::string line;
-  if (!std::getline(in, line)) fail(csv.string(), "is empty (no header line)");
-  const std::vector<std::string> header = split_commas(line);
-  std::map<std::string, std::size_t> column;
-  for (std::size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
+  const io::Recording history = io::read_history_csv(csv);
   CystometryCurve c;
-  const std::vector<std::pair<const char*, std::vector<double>*>> wanted = {
-      {"time_s", &c.time_s},
-      {"volume_ml", &c.volume_ml},
-      {"pdet_cmh2o", &c.pdet_cmh2o},
-      {"flow_ml_s", &c.flow_ml_s}};
-  for (const auto& [name, values] : wanted)
-    if (!column.count(name)) fail(csv.string(), std::string("has no column '") + name + "'");
-  for (std::size_t number = 2; std::getline(in, line); ++number) {
-    if (line.empty()) continue;
-    const std::vector<std::string> cells = split_commas(line);
-    for (const auto& [name, values] : wanted) {
-      const std::size_t at = column[name];
-      if (at >= cells.size())
-        fail(csv.string(), "line " + std::to_string(number) + " has too few cells");
-      values->push_back(parse_cell(cells[at], csv, number));
-    }
-  }
+  c.time_s = history.time_s;
+  c.volume_ml = history.volume_ml;
+  c.flow_ml_s = history.flow_ml_s;
+  c.pdet_cmh2o.resize(history.rows());
+  for (std::size_t i = 0; i < history.rows(); ++i) c.pdet_cmh2o[i] = history.pdet_cmh2o(i);
   return c;
 }
 

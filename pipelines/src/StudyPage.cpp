@@ -11,7 +11,7 @@ namespace {
 using compare::SvgPlot;
 using compare::xml_escape;
 
-// Artificial-bladder design targets (physics.md §7).
+// Artificial-bladder design targets (docs/physics.md §7).
 constexpr double kDesignCapacityMl = 500.0;
 constexpr double kDesignPdetLowCmh2o = 40.0;
 constexpr double kDesignPdetHighCmh2o = 70.0;
@@ -131,7 +131,7 @@ std::string study_html(const StudyReport& report, const std::string& study_name)
     << "<p>One row per variant; the same numbers are in study.csv. Pdet at 300 and 500 ml is "
        "interpolated on the filling curve (empty when not reached); capacity at 40 cmH2O is "
        "the volume where filling Pdet first reaches 40 cmH2O; compliance is &Delta;V/&Delta;Pdet "
-       "from the start to the end of filling (physics.md &sect;7). Shaded: the artificial-"
+       "from the start to the end of filling (docs/physics.md &sect;7). Shaded: the artificial-"
        "bladder design limits (capacity about 500 ml, maximum pressure 40-70 cmH2O).</p>\n";
   o << "<div class=\"wide\">" << table(report) << "</div>\n"
     << filling_plot(report, true) << filling_plot(report, false) << flow_plot(report);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "ItkLabelReader.h"
 #include "vesica/core/Error.h"
+#include "vesica/io/LabelMap.h"
 
 namespace vesica::surface {
 
@@ -12,16 +12,15 @@ std::size_t LabelVolume::voxel_count() const {
 }
 
 LabelVolume read_label_volume(const std::filesystem::path& path, int label) {
-  if (!std::filesystem::exists(path)) fail(path.string(), "label map not found");
-  detail::ItkLabel raw = detail::read_itk_label(path.string(), label);
+  io::LabelMap raw = io::read_label_map(path, label);
   LabelVolume out;
   out.size = raw.size;
   for (int d = 0; d < 3; ++d) {
-    out.spacing_mm(d) = raw.spacing[d];
-    out.origin_mm(d) = raw.origin[d];
+    out.spacing_mm(d) = raw.spacing_mm[d];
+    out.origin_mm(d) = raw.origin_mm[d];
     for (int e = 0; e < 3; ++e) out.direction(d, e) = raw.direction[3 * d + e];
   }
-  out.inside = std::move(raw.inside);
+  out.inside = std::move(raw.voxels);
   if (out.voxel_count() == 0)
     fail(path.string(), "the label map is empty (no voxel with the bladder label)",
          "check the segmentation or pass --label");

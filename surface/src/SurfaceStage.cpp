@@ -1,6 +1,7 @@
 #include "vesica/surface/SurfaceStage.h"
 
 #include <cmath>
+#include <filesystem>
 
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -80,12 +81,16 @@ TriangleSurface surface_from_label(const SurfaceStageOptions& options, StageReco
 }
 
 // Surface file -> repaired surface; open or non-manifold input is an error naming counts.
-TriangleSurface surface_from_file(const SurfaceStageOptions& options, StageRecord& record) {
-  TriangleSurface surface;
+// `input` receives the surface as read, with the file's region tags (empty when none).
+TriangleSurface surface_from_file(const SurfaceStageOptions& options, StageRecord& record,
+                                  TriangleSurface& input) {
+  std::vector<std::string> notes;
   {
     PhaseTimer timer(record, "read");
-    surface = read_surface(options.input);
+    input = read_surface(options.input, &notes);
   }
+  for (const auto& note : notes) record.summary()["notes"].push_back(note);
+  TriangleSurface surface = input;
   const EdgeTopology topology = edge_topology(surface.F);
   if (!topology.edge_manifold())
     fail(options.input,
@@ -106,7 +111,8 @@ TriangleSurface surface_from_file(const SurfaceStageOptions& options, StageRecor
   return surface;
 }
 
-TriangleSurface build_surface(const SurfaceStageOptions& options, StageRecord& record) {
+TriangleSurface build_surface(const SurfaceStageOptions& options, StageRecord& record,
+                              TriangleSurface& input) {
   if (options.shape) {
     PhaseTimer timer(record, "shape");
     ShapeSpec spec = *options.shape;
@@ -114,7 +120,7 @@ TriangleSurface build_surface(const SurfaceStageOptions& options, StageRecord& r
     return make_shape(spec);
   }
   record.add_input(options.input);
-  return is_surface_file(options.input) ? surface_from_file(options, record)
+  return is_surface_file(options.input) ? surface_from_file(options, record, input)
                                         : surface_from_label(options, record);
 }
 
@@ -141,39 +147,61 @@ std::vector<double> xyz(const Eigen::Vector3d& p) {
   return {p.x(), p.y(), p.z()};
 }
 
-}  // namespace
-
-nlohmann::json effective_parameters(const SurfaceStageOptions& o) {
-  nlohmann::json p = {
-      {"label", o.label},
-      {"edge_mm", o.edge_mm},
-      {"target_triangles", o.target_triangles},
-      {"remesh_iterations", o.remesh_iterations},
-      {"smooth_iterations", o.smoothing.iterations},
-      {"pass_band", o.smoothing.pass_band},
-      {"volume_rescale", o.volume_rescale},
-      {"fill_holes", o.repair.fill_holes},
-      {"max_hole_mm", o.repair.max_hole_perimeter_mm},
-      {"outlet", o.regions.outlet ? nlohmann::json(xyz(*o.regions.outlet)) : "auto"},
-      {"outlet_radius_mm", o.regions.outlet_radius_mm},
-      {"inlet_radius_mm", o.regions.inlet_radius_mm},
-      {"fixed_radius_mm", o.regions.fixed_radius_mm},
-      {"fixed_below_mm", o.regions.fixed_below_mm},
-      {"support_below_mm", o.regions.support_below_mm},
-      {"stl_ascii", o.write.stl_ascii}};
-  p["inlets"] = nlohmann::json::array();
-  for (const auto& inlet : o.regions.inlets) p["inlets"].push_back(xyz(inlet));
-  if (o.morph) p["morph"] = xyz(*o.morph);
-  if (o.shape) {
-    static const char* names[] = {"sphere", "ellipsoid", "pouch"};
-    p["shape"] = names[static_cast<int>(o.shape->kind)];
-    p["volume_ml"] = o.shape->volume_ml;
-    p["elongation"] = o.shape->elongation;
-    p["neck_radius_mm"] = o.shape->neck_radius_mm;
-    if (o.shape->semi_axes_mm) p["semi_axes"] = xyz(*o.shape->semi_axes_mm);
-  }
-  return p;
+// Any region option away from its default: the user asked for these regions.
+bool region_options_given(const RegionOptions& o) {
+  const RegionOptions defaults;
+  return o.outlet || !o.inlets.empty() || o.outlet_radius_mm != defaults.outlet_radius_mm ||
+         o.inlet_radius_mm != defaults.inlet_radius_mm ||
+         o.fixed_radius_mm != defaults.fixed_radius_mm ||
+         o.fixed_below_mm != defaults.fixed_below_mm ||
+         o.support_below_mm != defaults.support_below_mm;
 }
+
+// Counts of the tags a surface file brought, and the centre of its outlet patch (the mean
+// of the outlet triangles' centroids).
+RegionSummary summarize_regions(const TriangleSurface& surface) {
+  RegionSummary summary;
+  summary.triangle_counts.assign(6, 0);
+  const Eigen::MatrixXd centroids = io::triangle_centroids(surface.V, surface.F);
+  int outlets = 0;
+  for (Eigen::Index f = 0; f < surface.F.rows(); ++f) {
+    ++summary.triangle_counts[surface.region(f)];
+    if (surface.region(f) == static_cast<int>(Region::Outlet)) {
+      summary.outlet_mm += centroids.row(f).transpose();
+      ++outlets;
+    }
+  }
+  if (outlets > 0) summary.outlet_mm /= outlets;
+  return summary;
+}
+
+// A surface file's own tags follow its triangles through repair and remeshing by the one
+// rule of vesica_io (nearest recorded centroid), unless region options ask for new ones;
+// a file without tags, a label map and a shape get the options' regions (default: the
+// automatic outlet).
+RegionSummary tag_regions(const SurfaceStageOptions& options, const TriangleSurface& input,
+                          StageRecord& record, TriangleSurface& surface) {
+  RegionOptions regions = options.regions;
+  if (input.region.size() > 0 && !region_options_given(regions)) {
+    surface.region = io::retag_by_nearest_centroid(io::triangle_centroids(input.V, input.F),
+                                                   input.region, to_tagged(surface));
+    return summarize_regions(surface);
+  }
+  if (input.region.size() > 0)
+    add_notes({options.input + ": region options given; the file's region tags are replaced"},
+              record.summary());
+  else if (input.F.rows() > 0 && !regions.outlet)
+    add_notes({options.input + ": the outlet is placed automatically (most inferior point, " +
+               fmt::format("{:g}", regions.outlet_radius_mm) + " mm patch)"},
+              record.summary());
+  if (options.shape && options.shape->kind == ShapeKind::Pouch && !regions.outlet)
+    // The neck's rounded end: a quarter circle of the neck radius from the lowest point.
+    regions.outlet_radius_mm =
+        std::max(regions.outlet_radius_mm, 0.5 * M_PI * pouch_neck_radius_mm(*options.shape));
+  return assign_regions(regions, surface);
+}
+
+}  // namespace
 
 nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChecks& checks) {
   const Eigen::VectorXd angles = triangle_min_angles_deg(surface.V, surface.F);
@@ -183,7 +211,7 @@ nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChec
           {"area_mm2", area},
           {"area_cm2", area / 100.0},
           {"centroid_mm", xyz(volume_centroid(surface.V, surface.F))},
-      {"triangle_count", surface.F.rows()},
+          {"triangle_count", surface.F.rows()},
           {"vertex_count", surface.V.rows()},
           {"mean_edge_mm", mean_edge_length(surface.V, surface.F)},
           {"quality",
@@ -201,9 +229,9 @@ nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChec
 }
 
 TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecord& record) {
-  record.parameters().update(effective_parameters(options));
   record.summary()["notes"] = nlohmann::json::array();
-  TriangleSurface surface = build_surface(options, record);
+  TriangleSurface input;  // a surface file as read, with its tags; empty otherwise
+  TriangleSurface surface = build_surface(options, record, input);
   if (options.morph) apply_morph(options, record, surface);
 
   SurfaceChecks checks;
@@ -214,12 +242,7 @@ TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecor
   if (!checks.passed())
     fail(options.output, checks.first_failure(), "nothing written; see --fill-holes, --edge-mm");
 
-  RegionOptions regions = options.regions;
-  if (options.shape && options.shape->kind == ShapeKind::Pouch && !regions.outlet)
-    // The neck's rounded end: a quarter circle of the neck radius from the lowest point.
-    regions.outlet_radius_mm =
-        std::max(regions.outlet_radius_mm, 0.5 * M_PI * pouch_neck_radius_mm(*options.shape));
-  const RegionSummary tagged = assign_regions(regions, surface);
+  const RegionSummary tagged = tag_regions(options, input, record, surface);
 
   record.summary().update(surface_summary(surface, checks));
   record.summary()["regions"] = regions_json(tagged);
@@ -228,7 +251,7 @@ TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecor
     write_surface(surface, options.output, options.write);
   }
   record.add_output(options.output);
-  if (!(options.output.size() >= 4 && options.output.substr(options.output.size() - 4) == ".vtp"))
+  if (std::filesystem::path(options.output).extension() != ".vtp")
     record.add_output(regions_sidecar_path(options.output));
   return surface;
 }

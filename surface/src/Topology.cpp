@@ -1,6 +1,5 @@
 #include "vesica/surface/Topology.h"
 
-#include <array>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -45,28 +44,6 @@ EdgeTopology edge_topology(const Eigen::MatrixXi& F) {
   for (int v = 0; v < n; ++v)
     if (on_boundary[v] && find_root(parent, v) == v) ++t.holes;
   return t;
-}
-
-void merge_identical_vertices(Eigen::MatrixXd& V, Eigen::MatrixXi& F) {
-  std::map<std::array<double, 3>, int> first_index;
-  std::vector<int> remap(V.rows());
-  std::vector<Eigen::Index> kept;
-  for (Eigen::Index v = 0; v < V.rows(); ++v) {
-    const auto [it, inserted] = first_index.emplace(
-        std::array<double, 3>{V(v, 0), V(v, 1), V(v, 2)}, static_cast<int>(kept.size()));
-    if (inserted) kept.push_back(v);
-    remap[v] = it->second;
-  }
-  Eigen::MatrixXd merged(kept.size(), 3);
-  for (std::size_t i = 0; i < kept.size(); ++i) merged.row(i) = V.row(kept[i]);
-  std::vector<Eigen::Vector3i> faces;
-  for (Eigen::Index f = 0; f < F.rows(); ++f) {
-    const Eigen::Vector3i t(remap[F(f, 0)], remap[F(f, 1)], remap[F(f, 2)]);
-    if (t(0) != t(1) && t(1) != t(2) && t(0) != t(2)) faces.push_back(t);
-  }
-  V = merged;
-  F.resize(faces.size(), 3);
-  for (std::size_t f = 0; f < faces.size(); ++f) F.row(f) = faces[f].transpose();
 }
 
 }  // namespace vesica::surface

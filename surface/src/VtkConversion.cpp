@@ -5,42 +5,16 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
-#include <vtkFieldData.h>
 #include <vtkIdList.h>
-#include <vtkIntArray.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkStringArray.h>
 #include <vtkTriangleFilter.h>
+
+#include "vesica/surface/SurfaceIO.h"
 
 namespace vesica::surface {
 
 vtkSmartPointer<vtkPolyData> to_polydata(const TriangleSurface& surface) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(surface.V.rows());
-  for (Eigen::Index i = 0; i < surface.V.rows(); ++i)
-    points->SetPoint(i, surface.V(i, 0), surface.V(i, 1), surface.V(i, 2));
-  auto polys = vtkSmartPointer<vtkCellArray>::New();
-  for (Eigen::Index f = 0; f < surface.F.rows(); ++f) {
-    const vtkIdType ids[3] = {surface.F(f, 0), surface.F(f, 1), surface.F(f, 2)};
-    polys->InsertNextCell(3, ids);
-  }
-  auto polydata = vtkSmartPointer<vtkPolyData>::New();
-  polydata->SetPoints(points);
-  polydata->SetPolys(polys);
-  const Eigen::VectorXi tags = surface.regions_or_wall();
-  auto region = vtkSmartPointer<vtkIntArray>::New();
-  region->SetName("region");
-  region->SetNumberOfValues(tags.size());
-  for (Eigen::Index f = 0; f < tags.size(); ++f) region->SetValue(f, tags(f));
-  polydata->GetCellData()->AddArray(region);
-  auto units = vtkSmartPointer<vtkStringArray>::New();
-  units->SetName("units");
-  units->InsertNextValue("mm");
-  polydata->GetFieldData()->AddArray(units);
-  return polydata;
+  return io::surface_polydata(to_tagged(surface));
 }
 
 TriangleSurface from_polydata(vtkPolyData* input) {

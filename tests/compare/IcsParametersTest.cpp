@@ -7,13 +7,14 @@
 
 #include "TestData.h"
 #include "vesica/compare/RecordingAnalysis.h"
-#include "vesica/compare/RecordingReader.h"
+#include "vesica/io/RecordingReader.h"
 
 namespace vc = vesica::compare;
 
 namespace {
 vc::RecordingAnalysis analysed(const std::string& name) {
-  return vc::analyse(vc::read_recording(vesica::test::source_dir() / "tests/compare/data" / name));
+  return vc::analyse(
+      vesica::io::read_recording(vesica::test::source_dir() / "tests/compare/data" / name));
 }
 }  // namespace
 

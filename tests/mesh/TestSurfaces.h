@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "IsotropicRemesh.h"
+#include "vesica/io/SurfaceFile.h"
 #include "vesica/mesh/SurfaceMesh.h"
 #include "vesica/mesh/SurfaceReader.h"
 
@@ -83,7 +84,8 @@ inline mesh::SurfaceMesh ct_bladder_surface(const std::filesystem::path& label,
   smooth->NormalizeCoordinatesOn();
   smooth->Update();
   vtkSmartPointer<vtkPolyData> surface = smooth->GetOutput();
-  const mesh::SurfaceMesh smooth_surface = mesh::surface_from_polydata(surface, label.string());
+  const mesh::SurfaceMesh smooth_surface =
+      mesh::to_surface_mesh(io::surface_from_polydata(surface, label.string()));
   // An equilateral triangle of edge e has area sqrt(3)/4 e^2; CGAL's remeshing gives
   // about 17 % more triangles than that estimate (edges between 4/5 and 4/3 of the target).
   const double area = mesh::triangle_areas_mm2(smooth_surface).sum();

@@ -1,5 +1,5 @@
 #pragma once
-// ICS urodynamic parameters (physics.md §7) of one recording, measured or simulated,
+// ICS urodynamic parameters (docs/physics.md §7) of one recording, measured or simulated,
 // computed with the definitions written out in docs/compare.md. A parameter the
 // recording cannot give (no flow channel, no desire events) is std::nullopt.
 #include <optional>

@@ -1,40 +1,8 @@
 #pragma once
-// One urodynamic recording (a measured cystometry + pressure-flow study, or a simulated
-// history.csv) in clinical units, one entry per row of the source file. Channels that the
-// file did not have are empty vectors; every present channel has one value per row.
-#include <optional>
-#include <string>
-#include <vector>
+// A urodynamic recording is read by vesica_io (vesica/io/RecordingReader.h); compare
+// analyses it under its own name.
+#include "vesica/io/Recording.h"
 
 namespace vesica::compare {
-
-struct Recording {
-  std::string source;              // file it was read from (for messages)
-  std::vector<int> line;           // 1-based line number of each row in the source file
-  std::vector<double> time_s;      // seconds from the start of the recording
-  std::vector<std::string> event;  // event label of the row ("" when none)
-  std::vector<double> pves_cmh2o;
-  std::vector<double> pabd_cmh2o;
-  std::vector<double> pdet_recorded_cmh2o;  // the device's own Pdet channel, when present
-  std::vector<double> flow_ml_s;
-  std::vector<double> voided_ml;   // cumulative voided volume (flowmeter)
-  std::vector<double> infused_ml;  // cumulative infused volume (pump)
-  std::vector<double> volume_ml;   // bladder volume, when the file states it (simulation)
-
-  std::size_t rows() const { return time_s.size(); }
-
-  // Pdet of row i: the recorded Pdet channel when present (the device subtracts the
-  // unrounded signals), else Pves - Pabd.
-  double pdet_cmh2o(std::size_t i) const;
-  bool has_pdet() const;
-  bool has_flow() const { return !flow_ml_s.empty(); }
-  // Bladder volume of row i: the volume channel when present, else infused - voided
-  // (a measured recording starts from an empty bladder unless told otherwise).
-  double bladder_volume_ml(std::size_t i) const;
-  bool has_volume() const;
-  // Cumulative voided volume of row i: the voided channel, else the trapezoidal
-  // integral of the flow channel, else 0.
-  std::vector<double> voided_or_integrated_ml() const;
-};
-
+using io::Recording;
 }  // namespace vesica::compare

@@ -7,7 +7,7 @@ inline constexpr double kPaPerCmH2O = 98.0665;  // 1 cmH2O = 98.0665 Pa (exact, 
 inline constexpr double kM3PerMl = 1e-6;
 inline constexpr double kMPerMm = 1e-3;
 inline constexpr double kSecondsPerMinute = 60.0;
-inline constexpr double kStandardGravity = 9.81;  // m/s^2, as in physics.md §4
+inline constexpr double kStandardGravity = 9.81;  // m/s^2, as in docs/physics.md §4
 
 constexpr double m3_from_ml(double ml) { return ml * kM3PerMl; }
 constexpr double ml_from_m3(double m3) { return m3 / kM3PerMl; }

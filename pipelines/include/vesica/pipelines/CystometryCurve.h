@@ -1,6 +1,6 @@
 #pragma once
 // One simulated cystometry as read back from vesica-simulate's history.csv, and the study
-// numbers defined on it (physics.md §7). Units are those of the file's columns: volumes in
+// numbers defined on it (docs/physics.md §7). Units are those of the file's columns: volumes in
 // ml, pressures in cmH2O, flow in ml/s, time in s; the study table reports them as such.
 #include <cstddef>
 #include <filesystem>
@@ -19,8 +19,9 @@ struct CystometryCurve {
   std::size_t filling_end() const;
 };
 
-// Reads the columns time_s, volume_ml, pdet_cmh2o and flow_ml_s (others are ignored).
-// Throws vesica::Error naming the file for a missing column or a non-numeric cell.
+// Reads the columns time_s, volume_ml, pdet_cmh2o and flow_ml_s (others are ignored)
+// through vesica_io's history reader (vesica/io/HistoryCsv.h). Throws vesica::Error naming
+// the file for a missing column or a non-numeric cell.
 CystometryCurve read_history_csv(const std::filesystem::path& csv);
 
 // Pdet where the filling curve passes `volume_ml`, linearly interpolated between rows;

@@ -1,14 +1,14 @@
 #pragma once
-// The time series for ParaView: series.pvd listing series/step_NNNN.vtu, each the wall
-// at one time with point data displacement_mm and cell data principal Cauchy stresses
-// (kPa), membrane tensions (N/m), thickness_mm, principal stretches and region.
-// Coordinates in mm (field data "units" = "mm"), every file written atomically.
+// The wall's time series for ParaView, written by vesica_io (vesica/io/PvdSeries.h):
+// series.pvd listing series/step_NNNN.vtu, each the wall at one time with point data
+// displacement_mm and cell data principal Cauchy stresses (kPa), membrane tensions (N/m),
+// thickness_mm, principal stretches and region. Coordinates in mm.
 #include <filesystem>
-#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "vesica/io/PvdSeries.h"
 #include "vesica/simulate/MembraneElement.h"
 #include "vesica/simulate/WallModel.h"
 
@@ -24,16 +24,15 @@ class VtuSeriesWriter {
   // Writes series.pvd (after the steps, so that it lists only finished files).
   void finish();
 
-  std::filesystem::path pvd_path() const { return folder_ / "series.pvd"; }
-  std::filesystem::path series_folder() const { return folder_ / "series"; }
+  std::filesystem::path pvd_path() const { return series_.pvd_path(); }
+  std::filesystem::path series_folder() const { return series_.steps_folder(); }
 
  private:
-  std::filesystem::path folder_;
-  std::vector<std::pair<double, std::string>> steps_;
+  io::PvdSeries series_;
 };
 
-// One .vtu of the series (exposed for tests).
-std::string wall_vtu_text(const WallModel& wall, const std::vector<Eigen::Vector3d>& x,
-                          const std::vector<MembraneStressOutput>& stresses);
+// One step of the series: the wall at positions x (m), with its stresses.
+io::VtuGrid wall_frame(const WallModel& wall, const std::vector<Eigen::Vector3d>& x,
+                       const std::vector<MembraneStressOutput>& stresses);
 
 }  // namespace vesica::simulate

@@ -26,9 +26,10 @@ struct LabelVolume {
   }
 };
 
-// Reads a label map (.nii/.nii.gz/.nrrd/.mha) with ITK. Voxels equal to `label` are
-// inside; label 0 means "any non-zero voxel". Throws vesica::Error on an unreadable file
-// or an empty label.
+// Reads a label map through vesica_io (vesica/io/LabelMap.h: .nii/.nii.gz/.nrrd/.mha, and
+// 3D Slicer's .seg.nrrd). Voxels equal to `label` are inside; label 0 means "any non-zero
+// voxel" (a Slicer segmentation: its "bladder" segment). Throws vesica::Error on an
+// unreadable file or an empty label.
 LabelVolume read_label_volume(const std::filesystem::path& path, int label = 0);
 
 }  // namespace vesica::surface

@@ -16,8 +16,4 @@ struct EdgeTopology {
 
 EdgeTopology edge_topology(const Eigen::MatrixXi& F);
 
-// Merges vertices with exactly equal coordinates (a triangle soup from STL becomes a
-// connected surface) and drops triangles that collapse. F is renumbered.
-void merge_identical_vertices(Eigen::MatrixXd& V, Eigen::MatrixXi& F);
-
 }  // namespace vesica::surface

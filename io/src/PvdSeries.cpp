@@ -1,0 +1,60 @@
+#include "vesica/io/PvdSeries.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include <vtkNew.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLUtilities.h>
+
+#include "vesica/core/AtomicOutput.h"
+#include "vesica/core/Error.h"
+
+namespace vesica::io {
+
+PvdSeries::PvdSeries(std::filesystem::path folder, std::string name)
+    : folder_(std::move(folder)), name_(std::move(name)) {}
+
+void PvdSeries::add_step(double time_s, const VtuGrid& frame) {
+  char file[32];
+  std::snprintf(file, sizeof file, "step_%04zu.vtu", steps_.size());
+  write_vtu(frame, steps_folder() / file, VtuWriteOptions{false});
+  steps_.emplace_back(time_s, name_ + "/" + file);
+}
+
+void PvdSeries::finish() {
+  write_text_atomically(pvd_path(), pvd_text(steps_));
+}
+
+std::string pvd_text(const std::vector<std::pair<double, std::string>>& steps) {
+  std::ostringstream s;
+  s.precision(10);
+  s << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (const auto& [t, file] : steps)
+    s << "<DataSet timestep=\"" << t << "\" part=\"0\" file=\"" << file << "\"/>\n";
+  s << "</Collection>\n</VTKFile>\n";
+  return s.str();
+}
+
+std::vector<std::pair<double, std::string>> read_pvd(const std::filesystem::path& pvd) {
+  const std::string file = pvd.string();
+  vtkXMLDataElement* root = vtkXMLUtilities::ReadElementFromFile(file.c_str());
+  if (!root) fail(file, "not an XML file");
+  vtkNew<vtkXMLDataElement> owner;  // frees the tree on every path out
+  owner->AddNestedElement(root);
+  root->Delete();
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  if (std::string(root->GetName()) != "VTKFile" || !collection)
+    fail(file, "not a VTK collection (.pvd)");
+  std::vector<std::pair<double, std::string>> steps;
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* set = collection->GetNestedElement(i);
+    double t = 0.0;
+    if (!set->GetScalarAttribute("timestep", t) || !set->GetAttribute("file"))
+      fail(file, "DataSet " + std::to_string(i) + " without timestep or file");
+    steps.emplace_back(t, set->GetAttribute("file"));
+  }
+  return steps;
+}
+
+}  // namespace vesica::io

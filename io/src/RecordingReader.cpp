@@ -1,0 +1,288 @@
+#include "vesica/io/RecordingReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+#include "LowerCase.h"
+#include "vesica/core/Error.h"
+#include "vesica/core/Units.h"
+#include "vesica/io/CsvTable.h"
+
+namespace vesica::io {
+namespace {
+
+enum class Quantity { Time, Text, Pressure, Flow, Volume };
+
+struct Channel {
+  const char* key;
+  Quantity quantity;
+  std::vector<std::string> plain_names;  // accepted unsuffixed names besides the key
+};
+
+const std::vector<Channel>& channels() {
+  static const std::vector<Channel> all = {
+      {"time", Quantity::Time, {}},     {"event", Quantity::Text, {"label", "comment"}},
+      {"pves", Quantity::Pressure, {}}, {"pabd", Quantity::Pressure, {}},
+      {"pdet", Quantity::Pressure, {}}, {"flow", Quantity::Flow, {}},
+      {"voided", Quantity::Volume, {}}, {"infused", Quantity::Volume, {}},
+      {"volume", Quantity::Volume, {}},
+  };
+  return all;
+}
+
+// Factor from a unit (lowercase, "_" or "/" separated) to the channel's clinical unit;
+// nullopt when the unit is unknown for that quantity.
+std::optional<double> unit_factor(Quantity q, std::string unit) {
+  std::replace(unit.begin(), unit.end(), '/', '_');
+  if (q == Quantity::Pressure) {
+    if (unit == "cmh2o") return 1.0;
+    if (unit == "kpa") return 1e3 / units::kPaPerCmH2O;
+    if (unit == "pa") return 1.0 / units::kPaPerCmH2O;
+    if (unit == "mmhg") return 133.322387415 / units::kPaPerCmH2O;
+  } else if (q == Quantity::Flow) {
+    if (unit == "ml_s") return 1.0;
+    if (unit == "ml_min") return 1.0 / units::kSecondsPerMinute;
+  } else if (q == Quantity::Volume) {
+    if (unit == "ml") return 1.0;
+    if (unit == "l") return 1000.0;
+  } else if (q == Quantity::Time) {
+    if (unit == "s") return 1.0;
+    if (unit == "min") return units::kSecondsPerMinute;
+  }
+  return std::nullopt;
+}
+
+const char* unit_hint(Quantity q) {
+  switch (q) {
+    case Quantity::Pressure:
+      return "pressure units: cmh2o, kpa, pa, mmhg";
+    case Quantity::Flow:
+      return "flow units: ml_s, ml_min";
+    case Quantity::Volume:
+      return "volume units: ml, l";
+    case Quantity::Time:
+      return "time units: s, min, or mm:ss cells";
+    case Quantity::Text:
+      return "";
+  }
+  return "";
+}
+
+struct BoundColumn {
+  const Channel* channel = nullptr;
+  std::size_t index = 0;
+  std::string header;
+  double factor = 1.0;
+};
+
+// A bracketed unit in a header: "Pves [kPa]" or "Pves (kPa)".
+std::optional<std::string> bracket_unit(const std::string& header) {
+  const auto open = header.find_first_of("[(");
+  if (open == std::string::npos) return std::nullopt;
+  const auto close = header.find_first_of("])", open);
+  if (close == std::string::npos) return std::nullopt;
+  std::string u = detail::lower_case(trim(header.substr(open + 1, close - open - 1)));
+  u.erase(std::remove(u.begin(), u.end(), ' '), u.end());
+  return u;
+}
+
+std::string column_place(const std::string& header) {
+  return "row 1, column \"" + header + "\"";
+}
+
+double default_factor(const Channel& ch, const ReaderOptions& options, const std::string& file,
+                      const std::string& header) {
+  if (ch.quantity != Quantity::Pressure) return 1.0;
+  const auto f = unit_factor(Quantity::Pressure, detail::lower_case(options.pressure_unit));
+  if (!f)
+    fail(file, column_place(header) + ": unknown pressure unit \"" + options.pressure_unit + "\"",
+         unit_hint(Quantity::Pressure));
+  return *f;
+}
+
+// Unit of a column found by its default name: "<key>_<unit>" or the bare key.
+std::optional<BoundColumn> bind_default(const Channel& ch, const std::vector<std::string>& header,
+                                        const ReaderOptions& options, const std::string& file) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    const std::string h = detail::lower_case(header[i]);
+    std::vector<std::string> plain = ch.plain_names;
+    plain.push_back(ch.key);
+    if (const auto bu = bracket_unit(h)) {
+      const std::string base = trim(h.substr(0, h.find_first_of("[(")));
+      if (base != ch.key) continue;
+      const auto f = unit_factor(ch.quantity, *bu);
+      if (!f)
+        fail(file, column_place(header[i]) + ": unknown unit \"" + *bu + "\"",
+             unit_hint(ch.quantity));
+      return BoundColumn{&ch, i, header[i], *f};
+    }
+    if (std::find(plain.begin(), plain.end(), h) != plain.end())
+      return BoundColumn{&ch, i, header[i], default_factor(ch, options, file, header[i])};
+    const std::string prefix = std::string(ch.key) + "_";
+    if (h.rfind(prefix, 0) == 0 && ch.quantity != Quantity::Text) {
+      const std::string unit = h.substr(prefix.size());
+      const auto f = unit_factor(ch.quantity, unit);
+      if (!f)
+        fail(file, column_place(header[i]) + ": unknown unit \"" + unit + "\"",
+             unit_hint(ch.quantity));
+      return BoundColumn{&ch, i, header[i], *f};
+    }
+  }
+  return std::nullopt;
+}
+
+// Unit of a mapped column: bracketed unit, else a known "_<unit>" suffix, else the default.
+BoundColumn bind_mapped(const Channel& ch, const std::string& name,
+                        const std::vector<std::string>& header, const ReaderOptions& options,
+                        const std::string& file) {
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    if (detail::lower_case(header[i]) != detail::lower_case(trim(name))) continue;
+    if (ch.quantity == Quantity::Text) return BoundColumn{&ch, i, header[i], 1.0};
+    if (const auto bu = bracket_unit(header[i])) {
+      const auto f = unit_factor(ch.quantity, *bu);
+      if (!f)
+        fail(file, column_place(header[i]) + ": unknown unit \"" + *bu + "\"",
+             unit_hint(ch.quantity));
+      return BoundColumn{&ch, i, header[i], *f};
+    }
+    const std::string h = detail::lower_case(header[i]);
+    for (std::size_t p = h.find('_'); p != std::string::npos; p = h.find('_', p + 1))
+      if (const auto f = unit_factor(ch.quantity, h.substr(p + 1)))
+        return BoundColumn{&ch, i, header[i], *f};
+    return BoundColumn{&ch, i, header[i], default_factor(ch, options, file, header[i])};
+  }
+  fail(file, "missing column \"" + name + "\" (mapped to " + ch.key + ")",
+       "check --columns against the header row");
+}
+
+std::optional<double> parse_number(const std::string& cell) {
+  if (cell.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(cell.c_str(), &end);
+  if (end != cell.c_str() + cell.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+std::string format_seconds(double s) {
+  std::ostringstream o;
+  o << s << " s";
+  return o.str();
+}
+
+std::vector<double>* target(Recording& r, const std::string& key) {
+  if (key == "time") return &r.time_s;
+  if (key == "pves") return &r.pves_cmh2o;
+  if (key == "pabd") return &r.pabd_cmh2o;
+  if (key == "pdet") return &r.pdet_recorded_cmh2o;
+  if (key == "flow") return &r.flow_ml_s;
+  if (key == "voided") return &r.voided_ml;
+  if (key == "infused") return &r.infused_ml;
+  if (key == "volume") return &r.volume_ml;
+  return nullptr;
+}
+
+std::vector<BoundColumn> bind_columns(const std::vector<std::string>& header,
+                                      const ReaderOptions& options, const std::string& file) {
+  std::vector<BoundColumn> bound;
+  for (const auto& ch : channels()) {
+    const auto mapped = options.columns.find(ch.key);
+    if (mapped != options.columns.end()) {
+      bound.push_back(bind_mapped(ch, mapped->second, header, options, file));
+    } else if (auto b = bind_default(ch, header, options, file)) {
+      bound.push_back(*b);
+    }
+  }
+  auto has = [&](const char* key) {
+    return std::any_of(bound.begin(), bound.end(),
+                       [&](const BoundColumn& b) { return std::string(b.channel->key) == key; });
+  };
+  const std::string hint = "map it with --columns KEY=NAME";
+  if (!has("time")) fail(file, "missing column for time (time_s, time_min or time)", hint);
+  if (!has("pdet") && !(has("pves") && has("pabd")))
+    fail(file, "missing columns for pressure (pdet_cmh2o, or pves_cmh2o and pabd_cmh2o)", hint);
+  if (!has("infused") && !has("volume"))
+    fail(file, "missing column for volume (infused_ml or volume_ml)", hint);
+  return bound;
+}
+
+void read_cell(const BoundColumn& b, const std::string& cell, int line, const std::string& file,
+               Recording& r) {
+  const std::string place =
+      "row " + std::to_string(line) + ", column \"" + b.header + "\": \"" + cell + "\"";
+  if (b.channel->quantity == Quantity::Text) {
+    r.event.push_back(cell);
+    return;
+  }
+  std::optional<double> v;
+  if (b.channel->quantity == Quantity::Time && cell.find(':') != std::string::npos)
+    v = parse_clock_time(cell);
+  else if (const auto n = parse_number(cell))
+    v = *n * b.factor;
+  if (!v) fail(file, place + " is not a number");
+  auto* values = target(r, b.channel->key);
+  if (b.channel->quantity == Quantity::Time && !values->empty() && *v < values->back())
+    fail(file,
+         place + " goes back in time (" + format_seconds(*v) + " after " +
+             format_seconds(values->back()) + ")",
+         "rows must be sorted by time");
+  values->push_back(*v);
+}
+
+}  // namespace
+
+std::optional<double> parse_clock_time(const std::string& cell) {
+  std::vector<std::string> parts;
+  std::stringstream ss(cell);
+  for (std::string p; std::getline(ss, p, ':');) parts.push_back(trim(p));
+  if (parts.size() < 2 || parts.size() > 3) return std::nullopt;
+  double seconds = 0.0;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const auto v = parse_number(parts[i]);
+    if (!v || *v < 0) return std::nullopt;
+    if (i > 0 && *v >= 60.0) return std::nullopt;
+    seconds = seconds * 60.0 + *v;
+  }
+  return seconds;
+}
+
+ColumnMap parse_column_map(const std::string& text) {
+  ColumnMap map;
+  std::stringstream ss(text);
+  for (std::string item; std::getline(ss, item, ',');) {
+    if (trim(item).empty()) continue;
+    const auto eq = item.find('=');
+    if (eq == std::string::npos) usage_error("--columns: \"" + item + "\" is not KEY=NAME");
+    const std::string key = detail::lower_case(trim(item.substr(0, eq)));
+    const bool known = std::any_of(channels().begin(), channels().end(),
+                                   [&](const Channel& c) { return key == c.key; });
+    if (!known)
+      usage_error("--columns: unknown key \"" + key + "\"",
+                  "keys: time, event, pves, pabd, pdet, flow, voided, infused, volume");
+    map[key] = trim(item.substr(eq + 1));
+  }
+  return map;
+}
+
+Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& options) {
+  const std::string file = csv.string();
+  if (!std::filesystem::exists(csv)) fail(file, "cannot open the recording", "check the path");
+  const CsvTable table = read_csv_table(csv);
+  const std::vector<BoundColumn> bound = bind_columns(table.header, options, file);
+  Recording r;
+  r.source = file;
+  r.line = table.line;
+  for (std::size_t row = 0; row < table.row_count(); ++row)
+    for (const auto& b : bound) read_cell(b, table.rows[row][b.index], table.line[row], file, r);
+  if (r.rows() < options.min_rows)
+    fail(file, options.min_rows == 2
+                   ? "fewer than two data rows"
+                   : "fewer than " + std::to_string(options.min_rows) + " data rows");
+  return r;
+}
+
+}  // namespace vesica::io

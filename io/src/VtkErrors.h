@@ -1,0 +1,39 @@
+#pragma once
+// Internal: VTK readers and writers report problems through their ErrorEvent (printed to
+// stderr by default) instead of failing. This observer collects the first message, so that
+// io turns it into one vesica::Error naming the file and nothing is printed raw.
+#include <string>
+
+#include <vtkCommand.h>
+#include <vtkObject.h>
+#include <vtkSmartPointer.h>
+
+namespace vesica::io::detail {
+
+class VtkErrors : public vtkCommand {
+ public:
+  static VtkErrors* New() { return new VtkErrors; }
+  void Execute(vtkObject*, unsigned long, void* call_data) override {
+    if (message_.empty() && call_data) message_ = static_cast<const char*>(call_data);
+    if (message_.empty()) message_ = "unknown VTK error";
+  }
+  const std::string& message() const { return message_; }
+  bool any() const { return !message_.empty(); }
+
+ private:
+  std::string message_;
+};
+
+// Watches `object`'s errors (and warnings, which VTK's readers use for broken files).
+inline vtkSmartPointer<VtkErrors> watch_errors(vtkObject* object) {
+  auto errors = vtkSmartPointer<VtkErrors>::New();
+  object->AddObserver(vtkCommand::ErrorEvent, errors);
+  object->AddObserver(vtkCommand::WarningEvent, errors);
+  return errors;
+}
+
+// The last line of a VTK message ("ERROR: In ..., line N\nvtkX (0x..): what") without
+// the source location, so that the error stays one line.
+std::string vtk_message_line(const std::string& message);
+
+}  // namespace vesica::io::detail
