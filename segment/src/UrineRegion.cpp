@@ -23,7 +23,7 @@ constexpr double kMaxAnisotropy = 1.2;      // voxel edge ratio processed as it 
 
 // The partial-volume border: half way between the urine level inside the region and
 // the level of its immediate surroundings, so that border voxels split evenly whatever
-// the bladder touches.
+// the bladder touches (docs/physics.md §10.2).
 void border_levels(const Float& smoothed, const Mask& region, const UrineWindow& w,
                    const SegmentParams& p, SegmentResult& r) {
   auto core = erode(region, p.shell_inner());

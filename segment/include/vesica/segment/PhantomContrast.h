@@ -1,8 +1,8 @@
 #pragma once
 // What each tissue of the phantom reads: Hounsfield units on CT, and on MR the signal of
-// a T2-weighted spin echo, S = gain * PD * (1 - exp(-TR/T1)) * exp(-TE/T2) (docs/segment.md
-// §MR phantom), from representative relaxation times at 1.5 T. The MR contrast thus
-// follows the echo and repetition times written in the DICOM header.
+// a T2-weighted spin echo, S = gain * PD * (1 - exp(-TR/T1)) * exp(-TE/T2) (docs/segment.md,
+// "MR phantom", with the tissue table), from representative relaxation times at 1.5 T. The
+// MR contrast thus follows the echo and repetition times written in the DICOM header.
 namespace vesica::segment {
 
 enum class Tissue { Air, Fat, Urine, BladderWall, Muscle, Bone };
