@@ -178,19 +178,27 @@ Float::Pointer anisotropic_diffusion(const Float& image, int iterations, double 
   return f->GetOutput();
 }
 
-// The mask voxel nearest to `seed` within `radius_mm`, if any.
-std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm) {
-  const auto& s = m.GetSpacing();
-  Mask::RegionType box;
+std::optional<Float::RegionType> box_within(const itk::ImageBase<3>& image, const Index& seed,
+                                            double radius_mm) {
+  const auto& s = image.GetSpacing();
+  Float::RegionType box;
   for (int i = 0; i < 3; ++i) {
     const auto r = static_cast<itk::IndexValueType>(std::ceil(radius_mm / s[i]));
     box.SetIndex(i, seed[i] - r);
     box.SetSize(i, static_cast<itk::SizeValueType>(2 * r + 1));
   }
-  if (!box.Crop(m.GetLargestPossibleRegion())) return std::nullopt;
+  if (!box.Crop(image.GetLargestPossibleRegion())) return std::nullopt;
+  return box;
+}
+
+// The mask voxel nearest to `seed` within `radius_mm`, if any.
+std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm) {
+  const auto& s = m.GetSpacing();
+  const auto box = box_within(m, seed, radius_mm);
+  if (!box) return std::nullopt;
   std::optional<Index> best;
   double best_d2 = radius_mm * radius_mm;
-  itk::ImageRegionConstIteratorWithIndex<Mask> it(&m, box);
+  itk::ImageRegionConstIteratorWithIndex<Mask> it(&m, *box);
   for (; !it.IsAtEnd(); ++it) {
     if (!it.Get()) continue;
     double d2 = 0;
@@ -241,7 +249,7 @@ Float::RegionType region_covering(const Float& image, const Mask& mask, double m
         lo[i] = std::min(lo[i], it.GetIndex()[i]);
         hi[i] = std::max(hi[i], it.GetIndex()[i]);
       }
-  Float::RegionType region = image.GetLargestPossibleRegion();
+  const Float::RegionType& region = image.GetLargestPossibleRegion();
   if (lo[0] > hi[0]) return region;  // empty mask: everything
   Index rlo, rhi;
   rlo.Fill(std::numeric_limits<itk::IndexValueType>::max());

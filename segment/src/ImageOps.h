@@ -32,6 +32,10 @@ Float::Pointer gaussian(const Float& image, double sigma_mm);
 // image (air: -1000 HU on CT, 0 on MR).
 Float::Pointer resample_isotropic(const Float& image, double spacing, double outside);
 Float::Pointer anisotropic_diffusion(const Float& image, int iterations, double conductance);
+// The index box of half edge radius_mm around `seed`, clipped to the image; empty when
+// none of it lies inside.
+std::optional<Float::RegionType> box_within(const itk::ImageBase<3>& image, const Index& seed,
+                                            double radius_mm);
 // The mask voxel nearest to `seed` within radius_mm, if any.
 std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm);
 Float::Pointer signed_distance(const Mask& m);  // mm, negative inside

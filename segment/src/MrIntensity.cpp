@@ -32,16 +32,10 @@ constexpr double kNoUpperBound = 1e30;  // on T2 nothing is brighter than urine 
 
 // The largest value within radius_mm of `seed` (for the message when it is too dark).
 double max_within(const Float& image, const Index& seed, double radius_mm) {
-  const auto& s = image.GetSpacing();
-  Float::RegionType box;
-  for (int i = 0; i < 3; ++i) {
-    const auto r = static_cast<itk::IndexValueType>(std::ceil(radius_mm / s[i]));
-    box.SetIndex(i, seed[i] - r);
-    box.SetSize(i, static_cast<itk::SizeValueType>(2 * r + 1));
-  }
   double best = 0;
-  if (!box.Crop(image.GetLargestPossibleRegion())) return best;
-  itk::ImageRegionConstIteratorWithIndex<Float> it(&image, box);
+  const auto box = box_within(image, seed, radius_mm);
+  if (!box) return best;
+  itk::ImageRegionConstIteratorWithIndex<Float> it(&image, *box);
   for (; !it.IsAtEnd(); ++it) best = std::max(best, static_cast<double>(it.Get()));
   return best;
 }

@@ -14,15 +14,11 @@
 #include "vesica/segment/Phantom.h"
 
 namespace seg = vesica::segment;
+using vesica::test::read_json;
 using vesica::test::read_text;
 using vesica::test::run_tool;
 
 namespace {
-
-nlohmann::json read_json(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
 
 struct MrCase {
   const char* name;

@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <itkImageFileReader.h>
+#include <nlohmann/json.hpp>
 
 #include "TestData.h"
 #include "vesica/segment/DicomSeriesWriter.h"
@@ -35,6 +37,11 @@ inline std::string read_text(const std::filesystem::path& p) {
     std::fclose(f);
   }
   return s;
+}
+
+inline nlohmann::json read_json(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
 }
 
 inline segment::LabelImage::Pointer read_label(const std::filesystem::path& p) {
