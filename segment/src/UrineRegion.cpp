@@ -114,7 +114,9 @@ Mask::Pointer opened_region(const Mask& window, const Index& seed, const UrineWi
     const auto start = nearest_inside(*core, seed, p.seed_search_mm + opening);
     if (!start) {
       if (opening == p.opening_mm)
-        fail(source, window_text(w), "check --seed (LPS mm) or the intensity window options");
+        fail(source, window_text(w),
+             "check --seed (LPS mm) and the window options; a volume file is read as CT "
+             "unless --modality mr");
       break;
     }
     auto opened = dilate(*component_at(*core, *start), opening);
