@@ -1,7 +1,7 @@
 #pragma once
-// Follower pressure on one triangle of the closed wall (physics.md §4), linear in space:
+// Follower pressure on one triangle of the closed wall (docs/physics.md §4), linear in space:
 // p(x) = p0 + ρ g·(x - x_ref) with g the gravity vector (pointing down), which is
-// physics.md's p0 + ρ g (x_ref - x) written with an upward g: p grows with depth.
+// docs/physics.md's p0 + ρ g (x_ref - x) written with an upward g: p grows with depth.
 // The consistent nodal forces of a linear p over a flat triangle with area vector
 // n A = (x2-x1)×(x3-x1)/2 are f_a = (x2-x1)×(x3-x1) (p_a + p1 + p2 + p3) / 24.
 #include <array>

@@ -6,8 +6,11 @@
 // as the wall's inertia here, so both sides of the interface move alike). The urine's
 // momentum rows of a wall node are added to the wall residual there (the traction of the
 // urine on the wall), and the interior of the tet mesh follows the wall by the harmonic
-// mesh motion. One UMFPACK solve per iteration for all unknowns, so no added-mass
-// instability whatever the densities.
+// mesh motion. One sparse LU per iteration for all unknowns (LinearSolver), so no
+// added-mass instability whatever the densities. The iteration is the one Newton loop
+// (NewtonLoop.h) with the elastic foundation on the wall dofs (coupled_newton_options()),
+// converged when the last increment moved no wall node by more than increment_tolerance
+// of the wall's size and changed no pressure by more than pressure_tolerance.
 //
 // Jacobian: exact for the membrane (K, inertia) and for the urine at fixed geometry
 // (∂R/∂(u, p), with ∂u_wall/∂x = I/Δt). Its dependence on the geometry is approximated by
@@ -15,17 +18,19 @@
 // motion of the interior nodes is lagged (quasi-Newton: more iterations, same solution).
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/PressureLoad.h"
-#include "vesica/simulate/fluid/FluidMesh.h"
-#include "vesica/simulate/fluid/FluidModel.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
+#include "MembraneProblem.h"
+#include "NewtonLoop.h"
+#include "PressureLoad.h"
+#include "fluid/FluidBoundary.h"
+#include "fluid/FluidModel.h"
+#include "fluid/MeshMotion.h"
 
 namespace vesica::simulate::fluid {
 
@@ -42,22 +47,6 @@ struct Inflow {
 // The fan of wall triangles around one node: an inlet reduced to a single node.
 Inflow inflow_at_node(const WallModel& wall, int node, double flow_rate);
 
-struct CouplingOptions {
-  int max_iterations = 40;
-  double position_tolerance = 1e-9;  // max |Δx| relative to the wall's size
-  double pressure_tolerance = 1e-7;  // max |Δp| relative to max(|p|, 1 Pa)
-  // Longest Newton step of a wall node, in mean reference edges, before the step is
-  // recomputed on an elastic foundation (0 = never).
-  double max_move_per_edge = 0.5;
-};
-
-struct CouplingReport {
-  bool converged = false;
-  int iterations = 0;
-  int regularized_iterations = 0;  // iterations whose step needed the foundation
-  std::string failure;
-};
-
 class FluidWallCoupling {
  public:
   // mesh: tetrahedra whose nodes 0..N−1 are the wall's nodes (N = wall node count, same
@@ -65,7 +54,7 @@ class FluidWallCoupling {
   // of mesh (remesh() replaces it).
   // Throws std::invalid_argument when the mesh does not start with the wall nodes.
   FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mesh, const FluidProperties& fluid,
-                    CouplingOptions options = {});
+                    const NewtonOptions& options = coupled_newton_options());
   ~FluidWallCoupling();
 
   // One backward-Euler step of dt (s). loads: the wall's loads without the urine
@@ -73,7 +62,7 @@ class FluidWallCoupling {
   // here. On convergence the step is committed (wall history, positions, velocities);
   // otherwise the state stays at the last committed step. Throws std::invalid_argument
   // when an inflow node is not held fixed by the wall.
-  CouplingReport step(double dt, const WallLoads& loads, const Inflow& inflow);
+  NewtonReport step(double dt, const WallLoads& loads, const Inflow& inflow);
 
   // Urine at rest with the hydrostatic pressure p = p_ref + ρ g·(x − x_ref) (Pa, m): the
   // equilibrium start when the wall's outside load balances it.
@@ -86,7 +75,7 @@ class FluidWallCoupling {
   // the urethra law (FluidMesh.h) and their inner nodes get free urine velocities. The
   // outlet pressure starts at the hydrostatic value at the patch centroid.
   void open_outlet(const UrethraOutlet& outlet);
-  bool outlet_open() const { return outlet_open_; }
+  bool outlet_open() const { return outlet_.has_value(); }
   // Outflow through the open outlet (m³/s, positive out), 0 when closed.
   double outflow() const;
   // Pressure of the open outlet's law (Pa) at its centroid.
@@ -120,6 +109,7 @@ class FluidWallCoupling {
 
  private:
   struct Unknowns;
+  class System;  // one step's coupled equations for the Newton loop
   void build_unknowns();
   FluidBoundary outlet_boundary() const;  // the open outlet's law in the modified pressure
   void set_wall_velocities(const std::vector<Eigen::Vector3d>& x_wall, double dt,
@@ -127,14 +117,6 @@ class FluidWallCoupling {
   void move_mesh(const std::vector<Eigen::Vector3d>& x_wall);        // interior by mesh motion
   void move_wall_nodes(const std::vector<Eigen::Vector3d>& x_wall);  // interior stays
   WallLoads step_loads(double dt, const WallLoads& loads_in, const Inflow& inflow) const;
-  // Assembles the coupled residual and Jacobian at the current state and solves; throws
-  // std::runtime_error when an element, the mesh or the factorization fails.
-  Eigen::VectorXd newton_increment(double dt, const WallLoads& loads,
-                                   const std::vector<Eigen::Vector3d>& x_wall,
-                                   const Eigen::SparseMatrix<double>& columns,
-                                   const Eigen::SparseMatrix<double>& rows);
-  Eigen::VectorXd regularized_solve(Eigen::SparseMatrix<double>& jacobian,
-                                    const Eigen::VectorXd& residual);
   double apply_urine_increment(const Eigen::VectorXd& dz);  // returns max |Δp|
   void commit(double dt, const WallLoads& loads, const std::vector<Eigen::Vector3d>& x_wall,
               const Inflow& inflow);
@@ -142,18 +124,13 @@ class FluidWallCoupling {
   MembraneProblem& wall_;
   FluidMesh mesh_;
   FluidProperties fluid_;
-  CouplingOptions options_;
+  NewtonLoop loop_;
   std::unique_ptr<Unknowns> unknowns_;
   HydrostaticPressure hydrostatic_part() const;  // ρ g·(x − x_h), the wall load it makes
 
   std::unique_ptr<HarmonicMeshMotion> motion_;
-  Eigen::Vector3d x_hydrostatic_;        // x_h: reference height of the hydrostatic part
-  std::vector<double> foundation_area_;  // per free wall dof: its node's area (m²)
-  double mean_edge_ = 0.0;               // of the reference wall (m)
-  double eta_ = 0.0;                     // foundation stiffness carried to the next iteration
-  int regularized_iterations_ = 0;
-  UrethraOutlet outlet_;
-  bool outlet_open_ = false;
+  Eigen::Vector3d x_hydrostatic_;           // x_h: reference height of the hydrostatic part
+  std::optional<UrethraOutlet> outlet_;     // empty while the urethra is closed
   std::vector<Eigen::Vector3d> x_, x_old_;  // tet node positions now and at t_n
   std::vector<Eigen::Vector3d> wall_velocity_;
   Eigen::VectorXd state_, state_old_;

@@ -8,8 +8,8 @@
 
 #include <Eigen/Dense>
 
+#include "fluid/FluidModel.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
-#include "vesica/simulate/fluid/FluidModel.h"
 
 namespace vesica::simulate::fluid {
 

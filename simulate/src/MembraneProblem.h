@@ -3,17 +3,17 @@
 // abdomen outside, wall weight and elastic supports, with fixed degrees of freedom
 // removed. Assembles the residual r = f_int - f_ext over the free degrees of freedom,
 // its tangent K = ∂r/∂u (sparse, pattern built once and reused), ∂r/∂p0 and the volume
-// gradient ∂V/∂u for the bordered cavity system (physics.md §4).
+// gradient ∂V/∂u for the bordered cavity system (docs/physics.md §4).
 #include <memory>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "vesica/simulate/BossakNewmark.h"
+#include "BossakNewmark.h"
+#include "MembraneElement.h"
+#include "PressureLoad.h"
 #include "vesica/simulate/Material.h"
-#include "vesica/simulate/MembraneElement.h"
-#include "vesica/simulate/PressureLoad.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {
@@ -22,7 +22,7 @@ struct WallLoads {
   HydrostaticPressure inside;   // urine; inside.p0 is the cavity pressure unknown
   HydrostaticPressure outside;  // abdominal pressure on the outer face (Pa); outside.p0 = Pabd
   Eigen::Vector3d wall_gravity = Eigen::Vector3d::Zero();  // m/s² acting on the wall mass
-  double wall_density = 920.0;                             // kg/m³ (physics.md §2)
+  double wall_density = 920.0;                             // kg/m³ (docs/physics.md §2)
   double support_stiffness = 0.0;  // springs of the support region, Pa/m (per unit area)
   double active_stress_pa = 0.0;   // detrusor T_a(t)
   double dt_s = 0.0;               // time step (viscoelastic history)

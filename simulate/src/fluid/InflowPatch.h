@@ -5,8 +5,8 @@
 #include <array>
 #include <vector>
 
-#include "vesica/simulate/fluid/BoundaryFaces.h"
-#include "vesica/simulate/fluid/FluidMesh.h"
+#include "fluid/BoundaryFaces.h"
+#include "fluid/FluidBoundary.h"
 
 namespace vesica::simulate::fluid {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Bossak–Newmark time integration of the wall's inertia (physics.md §3):
+// Bossak–Newmark time integration of the wall's inertia (docs/physics.md §3):
 //   M [(1 - α_B) a_n+1 + α_B a_n] + f_int(x_n+1) - f_ext = 0,
 //   x_n+1 = x_n + Δt v_n + Δt² [(1/2 - β_N) a_n + β_N a_n+1],
 //   v_n+1 = v_n + Δt [(1 - γ) a_n + γ a_n+1],

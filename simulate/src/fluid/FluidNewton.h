@@ -1,13 +1,16 @@
 #pragma once
-// Newton iteration for one (steady or backward-Euler) step of FluidProblem, one UMFPACK
-// LU per iteration with the symbolic analysis reused (the pattern is fixed per mesh).
+// Newton iteration for one (steady or backward-Euler) step of FluidProblem: the urine alone
+// in a given (fixed or moving) mesh. A system of the one Newton loop (NewtonLoop.h), without
+// wall (so no foundation) and without line search; every iteration factorizes its own
+// Jacobian (LinearSolver's LU with iterative refinement, the symbolic analysis kept, since
+// the pattern is fixed per mesh). Converged when the last increment is small in every field.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/fluid/FluidProblem.h"
+#include "fluid/FluidProblem.h"
 
 namespace vesica::simulate::fluid {
 
@@ -38,6 +41,7 @@ class FluidNewton {
                           Eigen::VectorXd& state, const AleFrame* frame = nullptr);
 
  private:
+  class System;
   struct Factorization;
   const FluidProblem& problem_;
   FluidNewtonOptions options_;

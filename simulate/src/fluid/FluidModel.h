@@ -1,5 +1,5 @@
 #pragma once
-// Urine as an incompressible Newtonian fluid (physics.md §4). SI units.
+// Urine as an incompressible Newtonian fluid (docs/physics.md §4). SI units.
 #include <Eigen/Dense>
 
 namespace vesica::simulate::fluid {

@@ -1,5 +1,5 @@
 #pragma once
-// Tension-field (wrinkling) membrane, physics.md §1: a membrane has no bending stiffness,
+// Tension-field (wrinkling) membrane, docs/physics.md §1: a membrane has no bending stiffness,
 // so it cannot carry compression; where the plane-stress law gives a compressive principal
 // stress the real wall wrinkles (or goes slack) instead. The relaxed energy
 //   W*(C) = min over β ≥ 0 and unit m of W(C + β m mᵀ)
@@ -14,8 +14,8 @@
 // material of the registry (it only calls plane_stress()).
 #include <Eigen/Dense>
 
+#include "PlaneStress.h"
 #include "vesica/simulate/Material.h"
-#include "vesica/simulate/PlaneStress.h"
 
 namespace vesica::simulate {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Building blocks of the decoupled (isochoric + volumetric) materials of physics.md §2:
+// Building blocks of the decoupled (isochoric + volumetric) materials of docs/physics.md §2:
 // C̄ = J^(-2/3) C, and every isochoric energy written through invariants Ī = C̄ : M.
 #include <memory>
 
@@ -30,7 +30,7 @@ struct IsochoricInvariant {
 IsochoricInvariant isochoric_invariant(const Kinematics& k, const Eigen::Matrix3d& M);
 
 // An isochoric stress S_iso(C) and its tangent D_iso = 2 dS_iso/dC (Pa). It is the part
-// the Maxwell branches act on (S∞ of physics.md §2).
+// the Maxwell branches act on (S∞ of docs/physics.md §2).
 class IsochoricPart {
  public:
   virtual ~IsochoricPart() = default;
@@ -79,7 +79,7 @@ class FiberFamilies : public IsochoricPart {
   double k2_;
 };
 
-// Active detrusor stress along both fiber families, S_a = T_a A / Ī4 (physics.md §2),
+// Active detrusor stress along both fiber families, S_a = T_a A / Ī4 (docs/physics.md §2),
 // with D_a = 2 dS_a/dC = -2 T_a A ⊗ dĪ4 / Ī4² (not symmetric; UMFPACK copes).
 void add_active_fiber_stress(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
                              Voigt6& D);

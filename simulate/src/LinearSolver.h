@@ -1,7 +1,8 @@
 #pragma once
-// The sparse direct solver of the Newton tangent K (free dofs; N/m). K keeps one sparsity
-// pattern for the whole run, so the fill-reducing ordering and symbolic analysis are done
-// once. Each factorization takes the fastest exact route:
+// The sparse direct solver of every Newton tangent K in simulate. K keeps one sparsity
+// pattern for the solver's life, so the fill-reducing ordering and symbolic analysis are
+// done once. For the wall's tangent (Symmetry::Detect) each factorization takes the
+// fastest exact route:
 //  - K symmetric (pressure without hydrostatic gradient) and positive definite: CHOLMOD
 //    supernodal Cholesky;
 //  - K symmetric but indefinite (volume control past the pressure limit point, a follower
@@ -9,7 +10,13 @@
 //    of an LU and close to a Cholesky's (SymmetricIndefiniteLdlt.h). Its inertia says when
 //    K is definite again, and the next factorization returns to Cholesky;
 //  - otherwise (follower pressure with a gradient): UMFPACK LU with partial pivoting.
-// All are exact factorizations of K, so Newton's quadratic convergence is untouched.
+// A system known to be unsymmetric (the Navier–Stokes and coupled wall–urine Jacobians,
+// Symmetry::Unsymmetric) goes to UMFPACK LU directly, without the symmetry check.
+// All are exact factorizations of K, so Newton's quadratic convergence is untouched. The
+// LU refines its solutions iteratively only when asked (Refinement::Iterative, UMFPACK's
+// default of up to two steps): Newton corrects a solve error at its next iteration anyway,
+// except where its convergence test asks increments below the solve's round-off (the
+// urine alone at rest, FluidNewton).
 // Dense kernels run in the system BLAS (OpenBLAS when installed; see docs/simulate.md).
 #include <memory>
 #include <vector>
@@ -21,7 +28,10 @@ namespace vesica::simulate {
 
 class LinearSolver {
  public:
-  LinearSolver();
+  enum class Symmetry { Detect, Unsymmetric };
+  enum class Refinement { None, Iterative };
+  explicit LinearSolver(Symmetry symmetry = Symmetry::Detect,
+                        Refinement refinement = Refinement::None);
   ~LinearSolver();
   LinearSolver(const LinearSolver&) = delete;
   LinearSolver& operator=(const LinearSolver&) = delete;
@@ -43,9 +53,11 @@ class LinearSolver {
 
  private:
   bool is_symmetric(const Eigen::SparseMatrix<double>& K);
+  bool factorize_lu(const Eigen::SparseMatrix<double>& K);
 
   struct Backends;
   std::unique_ptr<Backends> backends_;
+  Symmetry symmetry_;
   std::vector<int> transpose_slot_;  // entry k = (i, j) → index of (j, i)
   bool factorized_ = false;
   Method method_ = Method::None;

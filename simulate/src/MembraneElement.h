@@ -1,12 +1,13 @@
 #pragma once
-// The 3-node membrane element, total Lagrangian (physics.md §1). One Gauss point: the
+// The 3-node membrane element, total Lagrangian (docs/physics.md §1). One Gauss point: the
 // shape-function gradients are constant over the triangle.
 #include <array>
 
 #include <Eigen/Dense>
 
+#include "PlaneStress.h"
 #include "vesica/simulate/Material.h"
-#include "vesica/simulate/PlaneStress.h"
+#include "vesica/simulate/WallStress.h"
 
 namespace vesica::simulate {
 
@@ -40,12 +41,7 @@ MembraneResponse membrane_response(const MembraneGeometry& geometry,
                                    double J2_guess, const double* history_old, double* history_new,
                                    bool tension_field = false);
 
-// Cauchy stress and thickness of a response, for output: σ = (1/J) g S gᵀ, J = h A/(H A0).
-struct MembraneStressOutput {
-  double sigma1 = 0.0, sigma2 = 0.0;      // principal Cauchy stresses, σ1 ≥ σ2 (Pa)
-  double thickness = 0.0;                 // h = H √C33 (m)
-  double stretch1 = 1.0, stretch2 = 1.0;  // principal in-plane stretches
-};
+// Cauchy stress and thickness of a response, for output (WallStress.h).
 MembraneStressOutput membrane_stress_output(const MembraneGeometry& geometry,
                                             const MembraneResponse& response);
 

@@ -13,7 +13,7 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/fluid/FluidModel.h"
+#include "fluid/FluidModel.h"
 
 namespace vesica::simulate::fluid {
 

@@ -9,9 +9,9 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "vesica/simulate/fluid/BoundaryFaces.h"
-#include "vesica/simulate/fluid/FluidMesh.h"
-#include "vesica/simulate/fluid/FluidModel.h"
+#include "fluid/BoundaryFaces.h"
+#include "fluid/FluidBoundary.h"
+#include "fluid/FluidModel.h"
 
 namespace vesica::simulate::fluid {
 
