@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "vesica/pipelines/StageTables.h"
+
 namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
@@ -19,7 +21,7 @@ namespace {
 // Each stage's cost model: the coefficients are fitted to the stage's measured time and
 // peak memory at two or more sizes (docs/benchmarks.md and docs/pipeline-file.md, "Cluster
 // resources"), with the exponent of its growth with the mesh. Defaults of parameters a
-// pipeline file leaves out are the stage's own (its --help).
+// pipeline file leaves out are the stage's own, from its parameter table (table_default).
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTimeHeadroom = 3.0;    // a slower or busier node, the model's error
 constexpr double kMemoryHeadroom = 2.0;  // allocator slack, a larger mesh than estimated
@@ -45,6 +47,20 @@ double number(const PlannedStage& s, const std::string& key, double fallback) {
   } catch (const std::exception&) {
     return fallback;  // `vesica validate` and the stage itself report the bad value
   }
+}
+
+// The stage's own default of a numeric parameter (its parameter table), for parameters a
+// pipeline file leaves out; `fallback` for a tool without a table or a non-numeric entry.
+double table_default(const PlannedStage& s, const std::string& key, double fallback) {
+  const std::optional<ParameterTable> table = stage_table(s.tool);
+  const Parameter* entry = table ? table->find(key) : nullptr;
+  if (!entry || !entry->default_value.is_number()) return fallback;
+  return entry->default_value.get<double>();
+}
+
+// A numeric parameter as the pipeline file gives it, else the stage's default.
+double number(const PlannedStage& s, const std::string& key) {
+  return number(s, key, table_default(s, key, 0.0));
 }
 
 bool flag(const PlannedStage& s, const std::string& key) {
@@ -239,7 +255,7 @@ double level1_mb(double triangles) {
 // simulated time over the time step; voiding steps are shorter and their Newton harder.
 double level2_seconds(const PlannedStage& s, double tetrahedra, double fill_s, double void_s) {
   const double scale = std::pow(std::max(tetrahedra, 1.0) / 22205.0, 1.3);
-  const double fill_dt = number(s, "fluid_dt_s", 1.0), void_dt = number(s, "void_dt_s", 0.1);
+  const double fill_dt = number(s, "fluid_dt_s"), void_dt = number(s, "void_dt_s");
   return 10.0 + scale * (6.0 * fill_s / fill_dt + 3.7 * void_s / void_dt);
 }
 
@@ -251,16 +267,15 @@ double level2_mb(double tetrahedra) {
 Cost simulate_cost(const Plan& plan, std::size_t i) {
   const PlannedStage& s = plan.stages[i];
   const MeshSize size = mesh_size_for(plan, i);
-  const double start = number(s, "start_ml", 50.0), capacity = number(s, "capacity_ml", 350.0);
+  const double start = number(s, "start_ml"), capacity = number(s, "capacity_ml");
   const double fill_ml = std::max(capacity - start, 0.0);
   const bool voids = !flag(s, "no_void");
   const std::string protocol =
       fmt::format("{:g} -> {:g} ml{}", start, capacity, voids ? " and voiding" : "");
-  if (number(s, "level", 1.0) >= 2.0) {
-    const double fill_s =
-        fill_ml / number(s, "fill_rate_ml_min", 50.0) * 60.0 + number(s, "hold_s", 0.0);
+  if (number(s, "level") >= 2.0) {
+    const double fill_s = fill_ml / number(s, "fill_rate_ml_min") * 60.0 + number(s, "hold_s");
     // Voiding ends when the flow stops: about the capacity at a mean 10 ml/s.
-    const double void_s = voids ? std::min(number(s, "max_void_s", 120.0), capacity / 10.0) : 0.0;
+    const double void_s = voids ? std::min(number(s, "max_void_s"), capacity / 10.0) : 0.0;
     return {2, level2_seconds(s, size.tetrahedra, fill_s, void_s), level2_mb(size.tetrahedra),
             "level-2 cystometry " + protocol + " on " + size.basis};
   }
@@ -273,8 +288,8 @@ Cost compare_cost(const Plan& plan, std::size_t i) {
   const PlannedStage& s = plan.stages[i];
   if (!given(s, "calibrate")) return {1, 5.0, 200.0, "report"};
   const MeshSize size = mesh_size_for(plan, i);
-  const double runs = number(s, "max_simulations", 40.0);
-  const double fill_ml = std::max(350.0 - number(s, "start_ml", 50.0), 0.0);
+  const double runs = number(s, "max_simulations");
+  const double fill_ml = std::max(350.0 - number(s, "start_ml"), 0.0);
   return {2, runs * level1_seconds(size.triangles, fill_ml, false), level1_mb(size.triangles),
           "calibration, up to " + count(runs) + " fillings on " + size.basis};
 }

@@ -69,6 +69,20 @@ TEST(StageParameters, ManifestsListEveryTableEntry) {
       "mesh", manifest_parameters(dir / "m.msh.manifest.json"),
       {{"fluid", true}, {"tet_size_mm", 4.0}, {"thickness_by_region", {{"fixed", 4.5}}}});
 
+  const auto simulate = run_command(
+      tool_command("simulate", quoted((dir / "m.vtu").string()) + " -o " +
+                                   quoted((dir / "sim").string()) +
+                                   " --residual-ml 20 --start-ml 20 --capacity-ml 25 --no-void "
+                                   "--no-series"),
+      dir);
+  ASSERT_EQ(simulate.exit_code, 0) << simulate.err;
+  expect_every_entry("simulate", manifest_parameters(dir / "sim" / "summary.json.manifest.json"),
+                     {{"residual_ml", 20.0},
+                      {"start_ml", 20.0},
+                      {"capacity_ml", 25.0},
+                      {"no_void", true},
+                      {"no_series", true}});
+
   const auto compare = run_command(
       tool_command("compare",
                    "--measured " +
@@ -132,7 +146,6 @@ TEST(StageParameters, TooManyTetrahedraAreRefusedBeforeMeshing) {
 
 TEST(StageParameters, UnknownOptionGetsTheOptionMeant) {
   const fs::path dir = scratch_dir("stage-parameters-unknown");
-  // simulate has no table yet; the suggestion comes from the common stage frame.
   const auto r = run_command(tool_command("simulate", "bladder.vtu -o sim --mu 3"), dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("unknown option --mu (did you mean --mu-kpa?)"), std::string::npos) << r.err;
