@@ -21,7 +21,7 @@ const std::vector<std::string>& tools_without_tables() {
   // Not converted yet (issue 18): their folders were being reworked when the tables came.
   // Their `params` reach the tool unchecked until they move to VESICA_STAGE_TABLES, and
   // `vesica validate` names them so that this is never silent.
-  static const std::vector<std::string> tools = {"phantom", "segment", "simulate"};
+  static const std::vector<std::string> tools = {"simulate"};
   return tools;
 }
 
