@@ -32,6 +32,13 @@ class HydrostaticCavity final : public CavityModel {
   void start_clock() override;
   void begin_voiding(const UrethraLaw& urethra) override;
   StepResult try_step(const StepRequest& step) override;
+  // Continues, with the clock running, from another model's state on the same wall (level 2
+  // below the stress-free volume, docs/navier-stokes.md §8): the wall at x with wall_state's
+  // committed history, the pressure pves and outflow q_out (the urethra open when q_out > 0)
+  // now, under loads; start_volume_m3: the volume when the clock started, the base of the
+  // protocol's bookkeeping.
+  void continue_from(const std::vector<Eigen::Vector3d>& x, const MembraneProblem& wall_state,
+                     double pves, double q_out, double start_volume_m3, const ProtocolLoads& loads);
 
   double volume() const override { return volume_; }
   double pves() const override { return loads_.inside.p0; }

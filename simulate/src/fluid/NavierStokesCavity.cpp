@@ -104,6 +104,7 @@ StepRules NavierStokesCavity::rules() const {
 }
 
 double NavierStokesCavity::volume() const {
+  if (collapse_) return collapse_->volume();
   return settler_ ? settler_->volume() : coupling_->fluid_volume();
 }
 
@@ -128,12 +129,15 @@ void NavierStokesCavity::start_clock() {
                          units::ml_from_m3(volume()), units::cmh2o_from_pa(settler_->pves()));
     settler_.reset();
   }
+  V_start_ = coupling_->fluid_volume();
+  committed_loads_.pabd_pa = units::pa_from_cmh2o(settings_.pabd_cmh2o);
   update_max_speed();
 }
 
 // Pves: the urine pressure at the reference point (bladder neck) without the flow's
 // dynamic part, i.e. the wall-area mean of p − ρ g·(x − x_ref) (exact for urine at rest).
 double NavierStokesCavity::pves() const {
+  if (collapse_) return collapse_->pves();
   if (settler_) return settler_->pves();
   const auto& x = coupling_->positions();
   const auto& area = problem_.node_areas();
@@ -162,6 +166,7 @@ WallLoads NavierStokesCavity::step_loads(const StepRequest& step) const {
 }
 
 StepResult NavierStokesCavity::try_step(const StepRequest& step) {
+  if (collapse_) return collapse_->try_step(step);
   // The urethra opens once the pressure at the neck reaches the opening pressure.
   if (step.urethra && !coupling_->outlet_open() && pves() >= step.urethra->opening_pressure())
     open_urethra(*step.urethra, step.end_time_s - step.dt_s);
@@ -181,6 +186,10 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   statistics_.iterations += r.iterations;
   StepResult result;
   result.iterations = r.iterations;
+  if (!r.converged && can_hand_over(step)) {
+    hand_over(step, r.failure);
+    return collapse_->try_step(step);
+  }
   if (!r.converged) {
     ++statistics_.cutbacks;
     result.failure = r.failure;
@@ -189,6 +198,7 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   }
   statistics_.converged_step(r.iterations);
   last_loads_ = loads;
+  committed_loads_ = step.loads;
   result.converged = true;
   // Backward Euler: the tetrahedra lost exactly Q(t_{n+1}) dt through the outlet.
   result.voided_m3 = coupling_->outflow() * step.dt_s;
@@ -203,9 +213,35 @@ void NavierStokesCavity::open_urethra(const UrethraLaw& urethra, double time_s) 
                        units::cmh2o_from_pa(pves()));
 }
 
-// Below its stress-free volume the wall is slack and folds; without a wrinkling model the
-// folds run into the urine mesh. The voiding so far stands.
+// Below its stress-free volume the slack wall folds into the urine mesh: the tetrahedra
+// can no longer fill the space the wall encloses (a fold turns them inside out, gmsh
+// refuses the self-touching wall). There the urine moves slowly and is close to
+// hydrostatic, and level 1 on the same wall (its wrinkling membrane, its hydrostatic
+// urine, the same urethra law) continues the voiding from level 2's state: the wall, its
+// history, the pressure, the outflow and the volume bookkeeping (docs/navier-stokes.md §8).
+bool NavierStokesCavity::can_hand_over(const StepRequest& step) const {
+  return step.urethra && coupling_->outlet_open() && volume() < V_reference_;
+}
+
+void NavierStokesCavity::hand_over(const StepRequest& step, const std::string& failure) {
+  const double V = coupling_->fluid_volume();
+  auto level1 = std::make_unique<HydrostaticCavity>(wall_, material_, settings_, options_);
+  level1->continue_from(wall_positions(), problem_, pves(), coupling_->outflow(), V_start_,
+                        committed_loads_);
+  collapse_ = std::move(level1);
+  collapse_time_s_ = step.end_time_s - step.dt_s;
+  collapse_volume_ = V;
+  notes_.push_back("level 2 voided to " + std::to_string(units::ml_from_m3(V)) +
+                   " ml, below the stress-free volume, where the slack wall folds into the "
+                   "urine mesh (" +
+                   failure + "); level 1 continued the voiding from there");
+  vesica::log()->info("{}", notes_.back());
+}
+
 std::string NavierStokesCavity::voiding_end_note(const std::string& failure) const {
+  if (collapse_)
+    return "voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
+           " ml, where level 1 could not follow the slack wall further (" + failure + ")";
   if (volume() > V_reference_) return "";
   return "level-2 voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
          " ml, below the stress-free volume, where the slack wall folds into the urine mesh (" +
@@ -263,11 +299,13 @@ void NavierStokesCavity::update_max_speed() {
 }
 
 std::vector<Eigen::Vector3d> NavierStokesCavity::wall_positions() const {
+  if (collapse_) return collapse_->wall_positions();
   const auto& x = coupling_->positions();
   return {x.begin(), x.begin() + static_cast<long>(wall_.node_count())};
 }
 
 std::vector<MembraneStressOutput> NavierStokesCavity::wall_stresses() const {
+  if (collapse_) return collapse_->wall_stresses();
   return problem_.element_outputs(wall_positions(), last_loads_);
 }
 
@@ -290,6 +328,7 @@ std::vector<Eigen::Vector3d> NavierStokesCavity::nodal_wall_shear(const FluidMes
 }
 
 void NavierStokesCavity::add_frame(double time_s, bool write) {
+  if (collapse_) return;  // no urine tetrahedra any more: the wall's frames go on
   const FluidMesh now = coupling_->current_mesh();
   const std::vector<Eigen::Vector3d> shear = nodal_wall_shear(now);
   for (std::size_t i = 0; i < wall_.node_count(); ++i)
@@ -309,6 +348,7 @@ nlohmann::json NavierStokesCavity::statistics() const {
   nlohmann::json s = statistics_.json();
   s["seconds_per_step"] = statistics_.steps ? step_seconds_ / statistics_.steps : 0.0;
   s["linear_solver"] = coupling_->linear_solver_statistics();
+  if (collapse_) s["level1_below_stress_free"] = collapse_->statistics();
   return s;
 }
 
@@ -321,6 +361,9 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["max_wall_shear_pa"] = max_shear_;
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
+  s["level1_from"] = collapse_ ? nlohmann::json{{"time_s", collapse_time_s_},
+                                                {"volume_ml", units::ml_from_m3(collapse_volume_)}}
+                               : nlohmann::json(nullptr);
   s["time_steps_s"] = {{"filling", options_.level2.fill_dt_s},
                        {"voiding", options_.level2.void_dt_s}};
 }
