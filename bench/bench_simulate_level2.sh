@@ -11,7 +11,7 @@
 # filling and voiding phases, steps, Newton iterations and linear-solver counts, remeshes,
 # and the read-outs. Usage: bench_simulate_level2.sh BUILD_DIR [OUTDIR]
 # Environment: LEVEL2_CAPACITY_ML (350), LEVEL2_LINEAR_SOLVER (krylov|direct),
-# LEVEL2_FLUID_DT_S (1), LEVEL2_NO_VOID (set: filling only).
+# LEVEL2_FLUID_DT_S (0: adaptive), LEVEL2_NO_VOID (set: filling only).
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -33,7 +33,7 @@ extra=()
 [ -n "${LEVEL2_NO_VOID:-}" ] && extra+=(--no-void)
 "$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 --mu-kpa 3 \
   --capacity-ml "$capacity" --straining-kpa 4 --residual-ml 45 \
-  --linear-solver "${LEVEL2_LINEAR_SOLVER:-krylov}" --fluid-dt-s "${LEVEL2_FLUID_DT_S:-1}" \
+  --linear-solver "${LEVEL2_LINEAR_SOLVER:-krylov}" --fluid-dt-s "${LEVEL2_FLUID_DT_S:-0}" \
   "${extra[@]}" --json > "$work/simulate.json" || true
 t1=$(date +%s%N)
 
