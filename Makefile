@@ -14,6 +14,8 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
   xvfb xauth chromium snakemake python3-meshio
+# zlib: core reads every gzip output back before it replaces anything
+DEBIAN_PACKAGES += zlib1g-dev
 
 .PHONY: all deps configure build demo test bench format clean
 

@@ -10,6 +10,7 @@ find_package(spdlog REQUIRED)
 find_package(yaml-cpp REQUIRED)
 find_package(OpenSSL REQUIRED)  # SHA-256 content hashes for manifests
 find_package(Threads REQUIRED)
+find_package(ZLIB REQUIRED)  # checks gzip outputs whole (core/src/OutputCheck.cpp)
 
 # CLI11 is header-only; Debian ships a config on some releases only.
 if(NOT TARGET CLI11::CLI11)

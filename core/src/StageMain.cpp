@@ -6,6 +6,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
+#include "vesica/core/StageSafety.h"
 #include "vesica/core/Version.h"
 
 namespace vesica {
@@ -37,13 +38,17 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
   }
   set_quiet(options.json);
   configure_logging(options.json, options.verbose);
+  ignore_file_size_signal();
+  // The printed line, tool name included, stays within kMaxErrorLine.
+  const auto error_line = [&](const char* what) { return single_line(tool + ": error: " + what); };
   try {
+    protect_command_line_inputs(app);
     return body();
   } catch (const Error& e) {
-    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return e.exit_code();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return 1;
   }
 }
