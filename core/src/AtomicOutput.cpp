@@ -15,6 +15,7 @@
 #include "OutputCheck.h"
 #include "OutputInstall.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/StagedOutputs.h"
 
 namespace fs = std::filesystem;
 
@@ -92,6 +93,9 @@ void remove_stale_temporaries(const fs::path& target) {
 
 void write_checked(const fs::path& target_given, const std::function<void(const fs::path&)>& write,
                    bool may_be_empty) {
+  if (staging())
+    if (const auto place = place_in_staged_folder(target_given))
+      return write_checked(*place, write, may_be_empty);  // committed with its folder
   const fs::path target = without_trailing_separator(target_given);
   require_replaceable(target, OutputKind::Either);
   try {
@@ -110,7 +114,10 @@ void write_checked(const fs::path& target_given, const std::function<void(const 
     detail::check_written(tmp, target);
     injected_fault(target);
     require_replaceable(target, folder ? OutputKind::Folder : OutputKind::File);
-    detail::install_output(tmp, target);
+    if (staging() && !detail::inside_temporary(target.parent_path()))
+      stage_output(tmp, target);
+    else
+      detail::install_output(tmp, target);
   } catch (const fs::filesystem_error& e) {
     std::error_code ec;
     fs::remove_all(tmp, ec);

@@ -7,6 +7,7 @@
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
 #include "vesica/core/StageSafety.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Version.h"
 
 namespace vesica {
@@ -43,11 +44,19 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
   const auto error_line = [&](const char* what) { return single_line(tool + ": error: " + what); };
   try {
     protect_command_line_inputs(app);
-    return body();
+    begin_staging();  // every output replaced together, and only on success
+    const int code = body();
+    if (code == 0)
+      commit_staged_outputs();
+    else
+      discard_staged_outputs();
+    return code;
   } catch (const Error& e) {
+    discard_staged_outputs();
     std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return e.exit_code();
   } catch (const std::exception& e) {
+    discard_staged_outputs();
     std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return 1;
   }
