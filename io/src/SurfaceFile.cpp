@@ -10,6 +10,7 @@
 #include <vtkCellData.h>
 #include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
@@ -129,36 +130,40 @@ std::string retag_note(const std::filesystem::path& path, const RegionsSidecar& 
          "triangle centroid";
 }
 
+// Errors name `target`, the file the user asked for, not the temporary written.
 template <class Writer>
-void run_writer(Writer* writer, vtkPolyData* poly, const std::filesystem::path& tmp) {
+void run_writer(Writer* writer, vtkPolyData* poly, const std::filesystem::path& tmp,
+                const std::filesystem::path& target) {
   writer->SetInputData(poly);
   writer->SetFileName(tmp.c_str());
   const auto errors = detail::watch_errors(writer);
-  if (!writer->Write() || errors->any())
-    fail(tmp.string(),
-         "VTK could not write the surface: " + detail::vtk_message_line(errors->message()));
+  if (!writer->Write() || errors->any() || writer->GetErrorCode() != vtkErrorCode::NoError)
+    fail(target.string(), "VTK could not write the surface: " +
+                              detail::vtk_write_error(*errors, writer->GetErrorCode()));
 }
 
 void write_polydata(vtkPolyData* poly, const std::string& ext, const SurfaceWriteOptions& options,
-                    const std::filesystem::path& tmp) {
+                    const std::filesystem::path& tmp, const std::filesystem::path& target) {
   if (ext == ".vtp") {
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetDataModeToBinary();
-    run_writer(writer.Get(), poly, tmp);
+    // Appended, not inline: VTK 9.1's inline binary mode frees unallocated memory when the
+    // disk fills during the write.
+    writer->SetDataModeToAppended();
+    run_writer(writer.Get(), poly, tmp, target);
   } else if (ext == ".stl") {
     vtkNew<vtkSTLWriter> writer;
     if (options.stl_ascii)
       writer->SetFileTypeToASCII();
     else
       writer->SetFileTypeToBinary();
-    run_writer(writer.Get(), poly, tmp);
+    run_writer(writer.Get(), poly, tmp, target);
   } else if (ext == ".ply") {
     vtkNew<vtkPLYWriter> writer;
     writer->SetFileTypeToBinary();
-    run_writer(writer.Get(), poly, tmp);
+    run_writer(writer.Get(), poly, tmp, target);
   } else {
     vtkNew<vtkOBJWriter> writer;
-    run_writer(writer.Get(), poly, tmp);
+    run_writer(writer.Get(), poly, tmp, target);
   }
 }
 
@@ -278,8 +283,9 @@ void write_surface_file(const TaggedSurface& surface, const std::filesystem::pat
   if (!is_surface_file(path))
     fail(path.string(), "unknown surface format", "use .vtp, .stl, .ply or .obj");
   const vtkSmartPointer<vtkPolyData> poly = surface_polydata(surface);
-  write_atomically(
-      path, [&](const std::filesystem::path& tmp) { write_polydata(poly, ext, options, tmp); });
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    write_polydata(poly, ext, options, tmp, path);
+  });
   if (ext != ".vtp") write_regions_sidecar(surface, regions_sidecar_path(path));
 }
 

@@ -24,8 +24,14 @@ class VtkErrors : public vtkCommand {
   std::string message_;
 };
 
+// Sends every VTK message that no observer catches (a pipeline's executive reports a
+// failed writer in ten lines of its own) to vesica::log() at debug level, one line each,
+// instead of stderr. Idempotent; watch_errors calls it.
+void quiet_vtk_output();
+
 // Watches `object`'s errors (and warnings, which VTK's readers use for broken files).
 inline vtkSmartPointer<VtkErrors> watch_errors(vtkObject* object) {
+  quiet_vtk_output();
   auto errors = vtkSmartPointer<VtkErrors>::New();
   object->AddObserver(vtkCommand::ErrorEvent, errors);
   object->AddObserver(vtkCommand::WarningEvent, errors);
@@ -35,5 +41,9 @@ inline vtkSmartPointer<VtkErrors> watch_errors(vtkObject* object) {
 // The last line of a VTK message ("ERROR: In ..., line N\nvtkX (0x..): what") without
 // the source location, so that the error stays one line.
 std::string vtk_message_line(const std::string& message);
+
+// Why a VTK writer failed: its error code's meaning ("Ran out of disk space") when it set
+// one, else its first message. Never the temporary file's name VTK may quote.
+std::string vtk_write_error(const VtkErrors& errors, unsigned long error_code);
 
 }  // namespace vesica::io::detail
