@@ -6,11 +6,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
@@ -225,38 +227,50 @@ int main(int argc, char** argv) {
     params["wall_drag_pa_s_per_m"] = p.wall_drag_pa_s_per_m;
     params["wrinkling"] = p.wrinkling;
     params["level"] = c.level;
-    CystometryResult result;
-    if (c.level == 2) {
-      if (c.dynamic || c.wall.reference != ReferenceState::Scale)
-        usage_error("--level 2 supports --reference scale without --dynamic");
-      fluid::FluidMesh urine;
-      {
-        PhaseTimer timer(record, "read");
-        urine = fluid::urine_in_reference(read_urine(c.mesh), wall);
-      }
-      params["fluid_dt_s"] = c.fluid.fill_dt_s;
-      params["void_dt_s"] = c.fluid.void_dt_s;
-      params["urine_viscosity_pa_s"] = c.fluid.urine_viscosity;
-      c.fluid.output_dir = c.output;
-      c.fluid.write_series = options.write_series;
-      c.fluid.on_progress = options.on_progress;
-      PhaseTimer timer(record, "simulate");
-      result = fluid::run_fluid_cystometry(wall, urine, spec, p, c.fluid);
-    } else {
-      PhaseTimer timer(record, "simulate");
-      result = run_cystometry(wall, spec, p, options);
-    }
+    // The output folder is written whole under a temporary name and replaces the earlier
+    // one only when the run completed; a failed run's partial results are kept only where
+    // they replace nothing.
     const fs::path out(c.output);
+    const bool had_earlier = fs::exists(out);
+    CystometryResult result;
+    write_atomically(out, [&](const fs::path& tmp) {
+      options.output_dir = tmp;
+      if (c.level == 2) {
+        if (c.dynamic || c.wall.reference != ReferenceState::Scale)
+          usage_error("--level 2 supports --reference scale without --dynamic");
+        fluid::FluidMesh urine;
+        {
+          PhaseTimer timer(record, "read");
+          urine = fluid::urine_in_reference(read_urine(c.mesh), wall);
+        }
+        params["fluid_dt_s"] = c.fluid.fill_dt_s;
+        params["void_dt_s"] = c.fluid.void_dt_s;
+        params["urine_viscosity_pa_s"] = c.fluid.urine_viscosity;
+        c.fluid.output_dir = tmp;
+        c.fluid.write_series = options.write_series;
+        c.fluid.on_progress = options.on_progress;
+        PhaseTimer timer(record, "simulate");
+        result = fluid::run_fluid_cystometry(wall, urine, spec, p, c.fluid);
+      } else {
+        PhaseTimer timer(record, "simulate");
+        result = run_cystometry(wall, spec, p, options);
+      }
+      record.summary() = result.summary;
+      record.write(tmp / "summary.json", "");
+      if (!result.completed && had_earlier)
+        fail(c.mesh, result.failure, "the earlier results in " + c.output + " are kept");
+    });
     record.add_output(out / "history.csv");
     if (options.write_series) record.add_output(out / "series.pvd");
     if (options.write_series && c.level == 2) record.add_output(out / "fluid.pvd");
-    record.summary() = result.summary;
-    record.write(out / "summary.json",
-                 default_manifest_path(common, (out / "summary.json").string()));
+    record.add_output(out / "summary.json");
+    if (!result.completed) {    // no manifest: the runner reruns it next time
+      commit_staged_outputs();  // nothing was there: the partial results are the user's
+      fail(c.mesh, result.failure, "results up to that point are in " + c.output);
+    }
+    record.write("", default_manifest_path(common, (out / "summary.json").string()));
     if (!common.report.empty()) record.write(common.report, "");
     if (common.json) std::cout << record.summary().dump(2) << std::endl;
-    if (!result.completed)
-      fail(c.mesh, result.failure, "results up to that point are in " + c.output);
     return 0;
   });
 }
