@@ -3,10 +3,15 @@
 #   make test   same set-up, then every test through ctest
 #   make bench  same set-up, then the benchmarks (JSON in build/bench/, table in
 #               docs/benchmarks.md)
+#   make install [PREFIX=/usr/local]  build, then install executables, libraries, headers,
+#               the CMake package (find_package(vesica)) and the example pipelines
+#   make package  build, then the Debian packages build/vesica_<version>_amd64.deb and
+#               build/vesica-dev_<version>_amd64.deb (CPack)
 # Everything is idempotent: a second call installs nothing and rebuilds only what changed.
 
 BUILD_DIR ?= build
 JOBS      ?= $(shell nproc)
+PREFIX    ?= /usr/local
 SUDO      := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
@@ -17,7 +22,10 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
 # zlib: core reads every gzip output back before it replaces anything
 DEBIAN_PACKAGES += zlib1g-dev
 
-.PHONY: all deps configure build demo test bench format clean
+# make package: dpkg-shlibdeps computes the Debian package's Depends.
+DEBIAN_PACKAGES += dpkg-dev
+
+.PHONY: all deps configure build demo test bench install package format clean
 
 all: build
 
@@ -50,6 +58,13 @@ test: build
 # rewrites the table of docs/benchmarks.md.
 bench: build
 	bench/run.sh $(BUILD_DIR) $(BENCH)
+
+install: build
+	cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+package: build
+	cd $(BUILD_DIR) && cpack -G DEB
+	@ls $(BUILD_DIR)/*.deb
 
 format:
 	find core io segment surface mesh simulate compare pipelines tests bench \

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "vesica/compare/CalibrationRun.h"
+#include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/ModelComparison.h"
 #include "vesica/compare/ReportPage.h"
 #include "vesica/core/AtomicOutput.h"
@@ -23,8 +24,6 @@ void validate(const CompareOptions& o) {
   if (o.output.empty()) usage_error("--output is required", "-o REPORTDIR");
   if (o.measured.empty() && o.simulated.empty())
     usage_error("nothing to compare", "give --measured and/or --simulated");
-  if (!o.fit_volume_ml.empty() && !(o.fit_volume_ml[1] > o.fit_volume_ml[0]))
-    usage_error("--fit-volume-ml: LO must be below HI");
   if (!o.calibrate.empty() && (o.measured.empty() || o.mesh.empty()))
     usage_error("--calibrate needs --measured (the curve to fit) and --mesh (the geometry)");
 }
@@ -123,14 +122,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     record.add_output(out / "index.html");
     record.add_output(out / "metrics.json");
   }
-  record.parameters() = {{"measured", o.measured},
-                         {"simulated", o.simulated},
-                         {"columns", o.columns},
-                         {"pressure_unit", o.pressure_unit},
-                         {"mesh", o.mesh},
-                         {"calibrate", o.calibrate},
-                         {"fit_volume_ml", o.fit_volume_ml},
-                         {"spike_cmh2o", o.artefacts.spike_cmh2o}};
+  CompareOptions bound = o;  // the table reads every parameter's value back for the manifest
+  record.parameters() = parameter_table(bound).values();
   record.summary() = summary_numbers(measured.get(), simulated.get(), comparison,
                                      calibration ? &*calibration : nullptr);
   const auto summary = record.write(common.report, default_manifest_path(common, o.output));

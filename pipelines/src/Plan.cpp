@@ -8,8 +8,9 @@
 #include <set>
 
 #include "OutputPlaces.h"
+#include "vesica/core/Suggest.h"
+#include "vesica/pipelines/ParameterCheck.h"
 #include "vesica/pipelines/StudyExpansion.h"
-#include "vesica/pipelines/Suggest.h"
 
 namespace fs = std::filesystem;
 
@@ -79,6 +80,7 @@ class Planner {
   }
 
   Plan build() {
+    plan_.unchecked_tools = check_parameters(spec_, d_);
     resolve_stages();
     find_dependencies();
     check_duplicate_outputs();

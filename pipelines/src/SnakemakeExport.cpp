@@ -2,6 +2,10 @@
 
 #include <set>
 
+#include <fmt/format.h>
+
+#include "vesica/pipelines/StageResources.h"
+
 namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
@@ -41,6 +45,20 @@ std::string rule_name(const std::string& id) {
   return name;
 }
 
+// The stage's threads, memory and time (StageResources.h) for a cluster's scheduler; a
+// tool vesica does not ship gets the workflow's --default-resources.
+std::string resources_lines(const Plan& plan, std::size_t index) {
+  const StageResources r = stage_resources(plan, index);
+  if (!r.known) return "";
+  return fmt::format(
+      "    # resources: {}\n"
+      "    threads: {}\n"
+      "    resources:\n"
+      "        mem_mb={},\n"
+      "        runtime={},\n",
+      r.basis, r.threads, r.mem_mb, r.runtime_min);
+}
+
 }  // namespace
 
 std::string snakemake_workflow(const Plan& plan) {
@@ -56,7 +74,8 @@ std::string snakemake_workflow(const Plan& plan) {
   for (std::size_t i = 0; i < plan.stages.size(); ++i)
     if (!consumed.count(i)) out += "        " + py(plan.stages[i].manifest) + ",\n";
   out += "\n";
-  for (const auto& s : plan.stages) {
+  for (std::size_t index = 0; index < plan.stages.size(); ++index) {
+    const PlannedStage& s = plan.stages[index];
     out += "rule " + rule_name(s.id) + ":\n";
     std::set<std::string> inputs;
     for (const auto& in : s.inputs) {
@@ -74,6 +93,7 @@ std::string snakemake_workflow(const Plan& plan) {
     if (!is_folder_output(s.output)) out += "        " + py(s.output) + ",\n";
     out += "        " + py(s.report) + ",\n";
     out += "        " + py(s.manifest) + ",\n";
+    out += resources_lines(plan, index);
     std::string command = shell_word(s.executable.string());
     for (const auto& a : s.argv) command += " " + shell_word(a);
     out += "    shell:\n        " + py(command) + "\n\n";
