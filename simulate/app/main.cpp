@@ -1,6 +1,8 @@
 // vesica-simulate MESH -o OUTDIR: simulated cystometry (filling and voiding) of the
 // bladder wall with the level-1 wall-urine model, or with --level 2 the Navier–Stokes
 // urine on the tetrahedra. See docs/simulate.md and docs/navier-stokes.md.
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 
@@ -58,6 +60,22 @@ struct Cli {
   RunOptions run;
 };
 
+// A finite number within [lo, hi]: CLI::Range lets NaN through, and an unbounded
+// modulus (1e30 kPa) only makes Newton spin. An explicit 0 where 0 means "default" (--k-kpa)
+// is refused instead of ignored.
+CLI::Validator finite_range(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi)
+          return "'" + text + "' is not a number in [" + CLI::detail::to_string(lo) + ", " +
+                 CLI::detail::to_string(hi) + "]";
+        return {};
+      },
+      "[" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]");
+}
+
 MaterialSpec material_spec(const Cli& c) {
   MaterialSpec spec{c.material, {{"mu", units::pa_from_kpa(c.mu_kpa)}}};
   if (c.k_kpa > 0.0)
@@ -105,22 +123,28 @@ int main(int argc, char** argv) {
              }())
       ->capture_default_str();
   app.add_option("--mu-kpa", c.mu_kpa, "shear modulus μ (kPa)")
+      ->check(finite_range(0.01, 1e4))
       ->capture_default_str();
   app.add_option("--k-kpa", c.k_kpa,
                  "bulk modulus K (kPa); default 1000 mu: nearly incompressible, like the "
-                 "water-rich wall (the thesis's K = 10 kPa peaks near 1.5x the residual volume)");
+                 "water-rich wall (the thesis's K = 10 kPa peaks near 1.5x the residual volume)")
+      ->check(finite_range(0.01, 1e7));
   app.add_option("--k1-kpa", c.k1_kpa, "fiber stiffness k1 (kPa), material fibers")
+      ->check(finite_range(0, 1e4))
       ->capture_default_str();
   app.add_option("--k2", c.k2, "fiber exponent k2 (-), material fibers")
+      ->check(finite_range(0, 100))
       ->capture_default_str();
   app.add_option("--beta", c.beta, "Maxwell branch strengths β (list, up to 5)");
   app.add_option("--tau-s", c.tau_s, "Maxwell relaxation times τ (s, list)");
   app.add_option("--thickness-mm", c.wall.thickness_mm, "wall thickness where the mesh has none")
+      ->check(finite_range(0.1, 30))
       ->capture_default_str();
   app.add_option("--reference", c.reference, "stress-free reference: scale|prestress")
       ->capture_default_str();
   app.add_option("--residual-ml", c.wall.residual_ml,
                  "stress-free (residual) volume for --reference scale")
+      ->check(finite_range(1, 5000))
       ->capture_default_str();
   app.add_option("--image-pressure-cmh2o", p.image_pressure_cmh2o,
                  "pressure of the imaged bladder (--reference prestress)")

@@ -7,6 +7,7 @@
 #include "CystometryProtocol.h"
 #include "HydrostaticCavity.h"
 #include "PrestressReference.h"
+#include "ProtocolRanges.h"
 #include "fluid/NavierStokesCavity.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
@@ -46,6 +47,7 @@ void validate_against_reference(const ProtocolSettings& p, const RunOptions& o,
 }  // namespace
 
 void validate(const ProtocolSettings& p, const RunOptions& o, double reference_ml) {
+  detail::require_protocol_ranges(p, o);
   require(p.fill_rate_ml_min > 0.0, "fill_rate_ml_min must be > 0");
   require(p.start_ml > 0.0 && p.capacity_ml > p.start_ml, "need 0 < start_ml < capacity_ml");
   require(p.hold_s >= 0.0, "hold_s must be >= 0");

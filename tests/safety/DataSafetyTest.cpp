@@ -136,8 +136,9 @@ TEST_F(DataSafety, ASurfaceWhoseSidecarCannotBeWrittenKeepsTheEarlierPair) {
 }
 
 TEST_F(DataSafety, AKilledSimulationLeavesTheEarlierResultsAndNoHalfWrittenFolder) {
-  const std::string command = "cd '" + dir_.string() + "' && exec " + tool("vesica-simulate") +
-                              " bladder.vtu -o sim --capacity-ml 400 --fill-rate-ml-min 5";
+  const std::string command =
+      "cd '" + dir_.string() + "' && exec " + tool("vesica-simulate") +
+      " bladder.vtu -o sim --capacity-ml 300 --hold-s 3600 --straining-kpa 4";
   const pid_t pid = ::fork();
   if (pid == 0) {
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
@@ -192,6 +193,28 @@ TEST_F(DataSafety, AnOutputMayNotReplaceItsInput) {
   const auto r = run_command("cd '" + dir_.string() + "' && " + tool("vesica-surface") +
                              " bladder.vtp -o bladder.vtp");
   expect_nothing_lost(r, "bladder.vtp");
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(DataSafety, SettingsNoBladderTakesOrThatBoundNoWorkAreRefusedByName) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"--hold-s 1e30", "--hold-s"},  // frames until the disk is full
+      {"--k-kpa 0", "--k-kpa"},       // was silently the default
+      {"--mu-kpa 1e30", "--mu-kpa"},  // Newton spun for ever
+      {"--mu-kpa nan", "--mu-kpa"},   // NaN passes a plain range check
+      {"--detrusor-kpa -3", "--detrusor-kpa"},
+      {"--p-open-cmh2o -1", "--p-open-cmh2o"},
+      {"--support-kpa-per-mm -1", "--support-kpa-per-mm"}};
+  for (const auto& [arguments, option] : cases) {
+    const auto r = run_command("cd '" + dir_.string() + "' && " + tool("vesica-simulate") +
+                               " bladder.vtu -o sim2 " + arguments);
+    EXPECT_EQ(r.exit_code, 2) << arguments << "\n" << r.output;
+    EXPECT_NE(r.output.find(option), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(dir_ / "sim2")) << arguments;
+  }
 }
 
 }  // namespace
