@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 
+#include "MshCheck.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -324,6 +325,7 @@ void write_msh(const VolumeMesh& mesh, const std::filesystem::path& path) {
 MshFile read_msh(const std::filesystem::path& path) {
   const std::string file = path.string();
   if (!std::filesystem::exists(path)) fail(file, "file not found");
+  detail::check_msh_file(path);
   MshFile out;
   with_gmsh(file, "gmsh could not read the mesh", [&] {
     gmsh::open(file);

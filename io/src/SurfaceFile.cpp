@@ -29,6 +29,7 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include "LowerCase.h"
+#include "PlyCheck.h"
 #include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
 #include "vesica/core/AtomicOutput.h"
@@ -51,6 +52,7 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path) {
   const std::string name = path.string();
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".vtp") {
+    detail::check_vtk_xml_counts(path);
     auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     if (!xml->CanReadFile(name.c_str())) fail(name, "not a readable VTK XML polydata file");
     xml->SetFileName(name.c_str());
@@ -62,7 +64,7 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path) {
     stl->SetFileName(name.c_str());
     reader = stl;
   } else if (ext == ".ply") {
-    detail::check_ply_header(path);
+    detail::check_ply_file(path);
     auto ply = vtkSmartPointer<vtkPLYReader>::New();
     ply->SetFileName(name.c_str());
     reader = ply;
@@ -72,7 +74,7 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path) {
     reader = obj;
   }
   const auto errors = detail::watch_errors(reader);
-  reader->Update();
+  detail::update_reader(*reader, name);
   if (errors->any())
     fail(name, "cannot read the surface: " + detail::vtk_message_line(errors->message()));
   return vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
@@ -82,6 +84,29 @@ void require_millimetres(vtkPolyData* polydata, const std::string& origin) {
   auto* units = vtkStringArray::SafeDownCast(polydata->GetFieldData()->GetAbstractArray("units"));
   if (units && units->GetNumberOfValues() > 0 && units->GetValue(0) != "mm")
     fail(origin, "coordinates are in '" + units->GetValue(0) + "', expected mm");
+}
+
+// Every polygon's corners name existing points, and the points are finite: VTK's filters
+// index points by the ids a reader took from the file, without checking them.
+void require_valid_polygons(vtkPolyData* polydata, const std::string& origin) {
+  const vtkIdType points = polydata->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i) {
+    double p[3];
+    polydata->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      fail(origin, "point " + std::to_string(i) + " has a coordinate that is not finite");
+  }
+  vtkCellArray* polys = polydata->GetPolys();
+  vtkNew<vtkIdList> ids;
+  polys->InitTraversal();
+  for (vtkIdType c = 0; polys->GetNextCell(ids); ++c) {
+    if (ids->GetNumberOfIds() < 3)
+      fail(origin, "polygon " + std::to_string(c) + " has fewer than 3 corners");
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      if (ids->GetId(k) < 0 || ids->GetId(k) >= points)
+        fail(origin, "polygon " + std::to_string(c) + " names point " +
+                         std::to_string(ids->GetId(k)) + " of " + std::to_string(points));
+  }
 }
 
 int region_code(double value, const std::string& origin) {
@@ -177,6 +202,7 @@ bool is_surface_file(const std::filesystem::path& path) {
 TaggedSurface surface_from_polydata(vtkPolyData* input, const std::string& origin) {
   if (!input || input->GetNumberOfPolys() == 0) fail(origin, "no surface polygons");
   require_millimetres(input, origin);
+  require_valid_polygons(input, origin);
   // Vertices, lines and strips are not wall; keep only polygons, then triangulate.
   vtkNew<vtkPolyData> polys;
   polys->SetPoints(input->GetPoints());

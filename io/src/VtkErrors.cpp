@@ -44,6 +44,14 @@ std::string vtk_message_line(const std::string& message) {
   return text;
 }
 
+void update_reader(vtkAlgorithm& reader, const std::string& file) {
+  try {
+    reader.Update();
+  } catch (const std::exception& e) {
+    fail(file, std::string("cannot be read (") + e.what() + ")", "the file is damaged");
+  }
+}
+
 std::string vtk_write_error(const VtkErrors& errors, unsigned long error_code) {
   if (error_code != vtkErrorCode::NoError) return vtkErrorCode::GetStringFromErrorCode(error_code);
   std::string text = vtk_message_line(errors.message());

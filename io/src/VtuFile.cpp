@@ -18,6 +18,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
@@ -149,11 +150,12 @@ void write_vtu(const VtuGrid& g, const std::filesystem::path& path,
 VtuGrid read_vtu(const std::filesystem::path& path) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) fail(name, "file not found");
+  detail::check_vtk_xml_counts(path);
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   if (!reader->CanReadFile(name.c_str())) fail(name, "not a VTK XML unstructured grid");
   reader->SetFileName(name.c_str());
   const auto errors = detail::watch_errors(reader);
-  reader->Update();
+  detail::update_reader(*reader, name);
   if (errors->any())
     fail(name, "cannot read the VTU file: " + detail::vtk_message_line(errors->message()));
   vtkUnstructuredGrid* grid = reader->GetOutput();
