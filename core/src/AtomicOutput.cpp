@@ -1,6 +1,5 @@
 #include "vesica/core/AtomicOutput.h"
 
-#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -8,7 +7,6 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <regex>
 
@@ -33,25 +31,11 @@ fs::path without_trailing_separator(const fs::path& p) {
   return t;
 }
 
-// fsync reports the write-back errors (a full disk, an I/O error) that write() could not.
-void fsync_path(const fs::path& p, const fs::path& target) {
-  const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0)
-    fail(target.string(),
-         std::string("could not be reopened to flush it: ") + std::strerror(errno));
-  const int rc = ::fsync(fd);
-  const int error = errno;
-  ::close(fd);
-  // EINVAL: the file system does not support fsync (nothing to flush, nothing lost).
-  if (rc != 0 && error != EINVAL)
-    fail(target.string(), std::string("could not be written: ") + std::strerror(error),
-         "check free disk space and quotas");
-}
-
 void fsync_tree(const fs::path& p, const fs::path& target) {
   if (fs::is_directory(p))
-    for (const auto& e : fs::recursive_directory_iterator(p)) fsync_path(e.path(), target);
-  fsync_path(p, target);
+    for (const auto& e : fs::recursive_directory_iterator(p))
+      detail::flush_to_disk(e.path(), target);
+  detail::flush_to_disk(p, target);
 }
 
 void check_not_empty(const fs::path& tmp, const fs::path& target) {

@@ -17,16 +17,6 @@ namespace {
 
 constexpr const char* kTemporaryPrefix = ".tmp-";
 
-void flush_folder(const fs::path& folder, const fs::path& target) {
-  const int fd = ::open(folder.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return;  // the rename is done; only its durability is in question
-  const int rc = ::fsync(fd);
-  const int error = errno;
-  ::close(fd);
-  if (rc != 0 && error != EINVAL)
-    fail(target.string(), std::string("could not be flushed to disk: ") + std::strerror(error));
-}
-
 // A folder replaces a folder in one step (the two names are exchanged, then the old
 // content removed); where the file system cannot exchange, the old folder is moved aside
 // and moved back should the second rename fail.
@@ -59,7 +49,20 @@ void install_output(const fs::path& tmp, const fs::path& target) {
   } catch (const fs::filesystem_error& e) {
     fail(target.string(), "could not be renamed into place: " + e.code().message());
   }
-  flush_folder(target.has_parent_path() ? target.parent_path() : fs::path("."), target);
+  flush_to_disk(target.has_parent_path() ? target.parent_path() : fs::path("."), target);
+}
+
+void flush_to_disk(const fs::path& path, const fs::path& target) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0)
+    fail(target.string(),
+         std::string("could not be reopened to flush it: ") + std::strerror(errno));
+  const int rc = ::fsync(fd);
+  const int error = errno;
+  ::close(fd);
+  if (rc != 0 && error != EINVAL)
+    fail(target.string(), std::string("could not be written: ") + std::strerror(error),
+         "check free disk space and quotas");
 }
 
 bool inside_temporary(const fs::path& path) {

@@ -30,6 +30,15 @@ Staging& state() {
   return s;
 }
 
+// Every staged output, staging ended.
+std::vector<Staged> take_all() {
+  const std::lock_guard<std::mutex> lock(state().mutex);
+  std::vector<Staged> outputs;
+  outputs.swap(state().outputs);
+  state().on = false;
+  return outputs;
+}
+
 void remove_quietly(const fs::path& p) {
   std::error_code ec;
   fs::remove_all(p, ec);
@@ -80,12 +89,7 @@ std::optional<fs::path> staged_content(const fs::path& target) {
 }
 
 void commit_staged_outputs() {
-  std::vector<Staged> outputs;
-  {
-    const std::lock_guard<std::mutex> lock(state().mutex);
-    outputs.swap(state().outputs);
-    state().on = false;
-  }
+  const std::vector<Staged> outputs = take_all();
   std::size_t done = 0;
   try {
     for (; done < outputs.size(); ++done) {
@@ -101,13 +105,7 @@ void commit_staged_outputs() {
 }
 
 void discard_staged_outputs() noexcept {
-  std::vector<Staged> outputs;
-  {
-    const std::lock_guard<std::mutex> lock(state().mutex);
-    outputs.swap(state().outputs);
-    state().on = false;
-  }
-  for (const Staged& s : outputs) remove_quietly(s.tmp);
+  for (const Staged& s : take_all()) remove_quietly(s.tmp);
 }
 
 }  // namespace vesica

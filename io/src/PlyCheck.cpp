@@ -23,6 +23,7 @@ constexpr std::uint64_t kMaxListLength = 1000;  // a polygon of more corners is 
 enum class Format { Ascii, BinaryLittle, BinaryBig };
 
 struct Property {
+  std::string name;
   bool list = false;
   int count_bytes = 0;  // list: the count's type
   int value_bytes = 0;  // the value's (or list items') type
@@ -72,7 +73,30 @@ Property parse_property(std::istringstream& words, const std::string& file) {
     p.value_bytes = type_bytes(type, p.value_float);
     if (p.value_bytes == 0) fail(file, "PLY property of unknown type \"" + type + "\"");
   }
+  p.name = name;
   return p;
+}
+
+bool has_property(const Element& e, const std::string& name, bool list) {
+  return std::any_of(e.properties.begin(), e.properties.end(),
+                     [&](const Property& p) { return p.name == name && p.list == list; });
+}
+
+// VTK's reader looks for these without checking they are there.
+void require_surface_elements(const Header& h, const std::string& file) {
+  const auto named = [&](const std::string& name) -> const Element* {
+    for (const Element& e : h.elements)
+      if (e.name == name) return &e;
+    return nullptr;
+  };
+  const Element* vertex = named("vertex");
+  const Element* face = named("face");
+  if (!vertex || !has_property(*vertex, "x", false) || !has_property(*vertex, "y", false) ||
+      !has_property(*vertex, "z", false))
+    fail(file, "PLY without an element vertex with properties x, y and z");
+  if (!face ||
+      !(has_property(*face, "vertex_indices", true) || has_property(*face, "vertex_index", true)))
+    fail(file, "PLY without an element face with a list property vertex_indices");
 }
 
 Header parse_header(std::istream& in, const std::string& file) {
@@ -114,6 +138,7 @@ Header parse_header(std::istream& in, const std::string& file) {
     }
   }
   if (!have_format) fail(file, "PLY header without a known format line");
+  require_surface_elements(h, file);
   return h;
 }
 

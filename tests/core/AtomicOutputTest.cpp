@@ -15,10 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return vesica::test::file_text(p);
 }
 }  // namespace
 

@@ -33,7 +33,7 @@ using namespace vesica::fuzz;
 // Sanitizer reports end the case with this code; an allocation a header made up (a count
 // that would take gigabytes) is a report, not a slow success.
 extern "C" const char* __asan_default_options() {
-  return "exitcode=86:detect_leaks=0:max_allocation_size_mb=2048:hard_rss_limit_mb=3072:"
+  return "exitcode=86:detect_leaks=0:max_allocation_size_mb=1024:hard_rss_limit_mb=3072:"
          "allocator_may_return_null=0:handle_abort=1";
 }
 extern "C" const char* __ubsan_default_options() {

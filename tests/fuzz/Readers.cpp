@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include "../io/OctahedronMesh.h"
 #include "vesica/core/Error.h"
 #include "vesica/io/LabelMap.h"
 #include "vesica/io/MshFile.h"
@@ -33,38 +34,8 @@ fs::path copy_into(const fs::path& dir, const fs::path& file) {
   return to;
 }
 
-// The octahedron (vertices at +-10 mm on the axes), its upper faces the outlet, with the
-// centre node and 8 tetrahedra, a thickness and a fiber frame per triangle.
 io::VolumeMesh octahedron() {
-  io::VolumeMesh m;
-  m.nodes.resize(7, 3);
-  m.nodes << 10, 0, 0, -10, 0, 0, 0, 10, 0, 0, -10, 0, 0, 0, 10, 0, 0, -10, 0, 0, 0;
-  m.triangles.resize(8, 3);
-  m.tets.resize(8, 4);
-  m.tri_region.resize(8);
-  m.thickness_mm = Eigen::VectorXd::Constant(8, 3.0);
-  m.fiber1.resize(8, 3);
-  m.fiber2.resize(8, 3);
-  int f = 0;
-  for (int sx : {1, -1})
-    for (int sy : {1, -1})
-      for (int sz : {1, -1}) {
-        const int x = sx > 0 ? 0 : 1, y = sy > 0 ? 2 : 3, z = sz > 0 ? 4 : 5;
-        if (sx * sy * sz > 0)
-          m.triangles.row(f) << x, y, z;
-        else
-          m.triangles.row(f) << x, z, y;
-        m.tets.row(f) << 6, m.triangles(f, 0), m.triangles(f, 1), m.triangles(f, 2);
-        m.tri_region(f) = sz > 0 ? 2 : 1;
-        const Eigen::Vector3d a = m.nodes.row(m.triangles(f, 0)),
-                              b = m.nodes.row(m.triangles(f, 1)),
-                              c = m.nodes.row(m.triangles(f, 2));
-        const Eigen::Vector3d n = (b - a).cross(c - a).normalized(), e = (b - a).normalized();
-        m.fiber1.row(f) = e.transpose();
-        m.fiber2.row(f) = n.cross(e).transpose();
-        ++f;
-      }
-  return m;
+  return test::octahedron_mesh();
 }
 
 io::TaggedSurface octahedron_surface() {

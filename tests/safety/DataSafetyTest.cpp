@@ -178,6 +178,12 @@ TEST_F(DataSafety, APipelineWhoseOutputIsItsOwnFolderDeletesNothing) {
                              "' --workdir '" + dir_.string() + "'");
   EXPECT_NE(r.exit_code, 0) << r.output;
   EXPECT_EQ(hashes(dir_), before_);
+  // validate says why, at the output's line.
+  const auto v = run_command(tool("vesica") + " validate '" + (dir_ / "p.yaml").string() + "'");
+  EXPECT_EQ(v.exit_code, 2) << v.output;
+  EXPECT_NE(v.output.find("p.yaml:2:"), std::string::npos) << v.output;
+  EXPECT_NE(v.output.find("output '.' of stage 'phantom' is the workdir"), std::string::npos)
+      << v.output;
 }
 
 TEST_F(DataSafety, AFolderTheUserMadeIsNotReplacedByAnOutput) {
