@@ -47,7 +47,6 @@ void validate_against_reference(const ProtocolSettings& p, const RunOptions& o,
 }  // namespace
 
 void validate(const ProtocolSettings& p, const RunOptions& o, double reference_ml) {
-  detail::require_protocol_ranges(p, o);
   require(p.fill_rate_ml_min > 0.0, "fill_rate_ml_min must be > 0");
   require(p.start_ml > 0.0 && p.capacity_ml > p.start_ml, "need 0 < start_ml < capacity_ml");
   require(p.hold_s >= 0.0, "hold_s must be >= 0");
@@ -63,6 +62,7 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
     if (o.dynamic || o.reference != ReferenceState::Scale)
       usage_error("level 2 supports the scaled reference (--reference scale) without --dynamic");
   }
+  detail::require_protocol_ranges(p, o);  // after the checks above, whose words users know
   if (reference_ml > 0.0) validate_against_reference(p, o, reference_ml);
 }
 
