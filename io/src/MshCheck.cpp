@@ -15,7 +15,7 @@ namespace {
 // ten bytes), and never fewer than a million (sparse tags of small files).
 constexpr double kTagsPerByte = 64.0;
 constexpr double kMinTagBound = 1e6;
-constexpr std::size_t kMaxLineBytes = 64 * 1024;
+constexpr std::size_t kMaxLineBytes = std::size_t{64} * 1024;
 
 bool integer_token(const std::string& w) {
   const std::size_t first = w[0] == '-' ? 1 : 0;

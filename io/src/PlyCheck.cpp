@@ -16,7 +16,7 @@
 namespace vesica::io::detail {
 namespace {
 
-constexpr std::size_t kMaxHeaderBytes = 64 * 1024;
+constexpr std::size_t kMaxHeaderBytes = std::size_t{64} * 1024;
 constexpr std::size_t kMaxAsciiLine = 4000;     // VTK's PLY parser splits longer lines
 constexpr std::uint64_t kMaxListLength = 1000;  // a polygon of more corners is not a wall
 

@@ -14,7 +14,7 @@
 namespace vesica::io::detail {
 namespace {
 
-constexpr std::size_t kMaxXmlHeaderBytes = 256 * 1024;
+constexpr std::size_t kMaxXmlHeaderBytes = std::size_t{256} * 1024;
 // zlib packs a run of equal bytes at most about 1032 to 1: more elements than that many per
 // byte of the file cannot be in it.
 constexpr double kMaxElementsPerByte = 1032.0;
