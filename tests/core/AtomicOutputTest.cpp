@@ -12,12 +12,7 @@
 #include "vesica/core/Error.h"
 
 namespace fs = std::filesystem;
-
-namespace {
-std::string read(const fs::path& p) {
-  return vesica::test::file_text(p);
-}
-}  // namespace
+using vesica::test::file_text;
 
 TEST(AtomicOutput, TemporaryKeepsExtensionAndFolder) {
   const fs::path tmp = vesica::temporary_sibling("out/dir/bladder.nii.gz");
@@ -31,7 +26,7 @@ TEST(AtomicOutput, ReplacesOnlyWhenComplete) {
   const fs::path dir = vesica::test::scratch_dir("atomic");
   const fs::path target = dir / "a.txt";
   vesica::write_text_atomically(target, "first");
-  EXPECT_EQ(read(target), "first");
+  EXPECT_EQ(file_text(target), "first");
   // A writer that fails half-way leaves the old content and no temporary behind.
   EXPECT_THROW(vesica::write_atomically(target,
                                         [](const fs::path& tmp) {
@@ -39,7 +34,7 @@ TEST(AtomicOutput, ReplacesOnlyWhenComplete) {
                                           throw vesica::Error(tmp.string(), "boom");
                                         }),
                vesica::Error);
-  EXPECT_EQ(read(target), "first");
+  EXPECT_EQ(file_text(target), "first");
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir)) (void)e, ++files;
   EXPECT_EQ(files, 1);
@@ -54,7 +49,7 @@ TEST(AtomicOutput, WritesFolders) {
       std::ofstream(tmp / "x.txt") << round;
     });
   }
-  EXPECT_EQ(read(target / "x.txt"), "1");
+  EXPECT_EQ(file_text(target / "x.txt"), "1");
 }
 
 TEST(AtomicOutput, FolderNamedWithTrailingSlash) {
@@ -65,7 +60,7 @@ TEST(AtomicOutput, FolderNamedWithTrailingSlash) {
     fs::create_directories(tmp);
     std::ofstream(tmp / "slice.dcm") << "x";
   });
-  EXPECT_EQ(read(dir / "ct" / "slice.dcm"), "x");
+  EXPECT_EQ(file_text(dir / "ct" / "slice.dcm"), "x");
 }
 
 TEST(AtomicOutput, AFullDiskFailsTheWriteAndKeepsTheEarlierFile) {
@@ -90,7 +85,7 @@ TEST(AtomicOutput, AFullDiskFailsTheWriteAndKeepsTheEarlierFile) {
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 7);
-  EXPECT_EQ(read(target), "earlier");
+  EXPECT_EQ(file_text(target), "earlier");
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir)) (void)e, ++files;
   EXPECT_EQ(files, 1);
@@ -103,8 +98,8 @@ TEST(AtomicOutput, TheFaultSwitchFailsTheNamedOutputOnly) {
   EXPECT_THROW(vesica::write_text_atomically(dir / "index.html", "new page"), vesica::Error);
   vesica::write_text_atomically(dir / "metrics.json", "{}");
   ::unsetenv("VESICA_FAIL_WRITE");
-  EXPECT_EQ(read(dir / "index.html"), "earlier page");
-  EXPECT_EQ(read(dir / "metrics.json"), "{}");
+  EXPECT_EQ(file_text(dir / "index.html"), "earlier page");
+  EXPECT_EQ(file_text(dir / "metrics.json"), "{}");
 }
 
 TEST(AtomicOutput, TemporariesOfAKilledRunAreRemovedByTheNextWrite) {

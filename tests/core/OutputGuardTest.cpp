@@ -11,12 +11,9 @@
 #include "vesica/core/Error.h"
 
 namespace fs = std::filesystem;
+using vesica::test::file_text;
 
 namespace {
-
-std::string read(const fs::path& p) {
-  return vesica::test::file_text(p);
-}
 
 void write_folder(const fs::path& target, const std::string& name, const std::string& text) {
   vesica::write_atomically(target, [&](const fs::path& tmp) {
@@ -46,7 +43,7 @@ TEST(OutputGuard, AFolderTheUserMadeIsNeverReplaced) {
   fs::create_directories(dir / "ct");
   std::ofstream(dir / "ct" / "notes.txt") << "the user's";
   EXPECT_THROW(write_folder(dir / "ct", "slice.dcm", "x"), vesica::Error);
-  EXPECT_EQ(read(dir / "ct" / "notes.txt"), "the user's");
+  EXPECT_EQ(file_text(dir / "ct" / "notes.txt"), "the user's");
   EXPECT_FALSE(fs::exists(dir / "ct" / "slice.dcm"));
 }
 
@@ -61,7 +58,7 @@ TEST(OutputGuard, AnEmptyFolderOrOneVesicaWroteIsReplacedWhole) {
   EXPECT_TRUE(vesica::carries_folder_marker(dir / "sim"));
   write_folder(dir / "sim", "history.csv", "second run");
   // The second run's folder, not a mixture: no step file of the first run is left.
-  EXPECT_EQ(read(dir / "sim" / "history.csv"), "second run");
+  EXPECT_EQ(file_text(dir / "sim" / "history.csv"), "second run");
   EXPECT_FALSE(fs::exists(dir / "sim" / "series"));
 }
 
@@ -75,8 +72,8 @@ TEST(OutputGuard, TheCurrentFolderAndItsParentsAreRefused) {
     EXPECT_THROW(write_folder(".", "slice.dcm", "x"), vesica::Error);
     EXPECT_THROW(write_folder("sub/../../work", "slice.dcm", "x"), vesica::Error);
   });
-  EXPECT_EQ(read(dir / "keep.txt"), "parent's file");
-  EXPECT_EQ(read(dir / "work" / "pipeline.yaml"), "stages: {}");
+  EXPECT_EQ(file_text(dir / "keep.txt"), "parent's file");
+  EXPECT_EQ(file_text(dir / "work" / "pipeline.yaml"), "stages: {}");
   try {
     inside(dir / "work", [&] { write_folder("..", "slice.dcm", "x"); });
   } catch (const vesica::Error& e) {
@@ -90,15 +87,15 @@ TEST(OutputGuard, AnInputAndTheFolderHoldingItAreNeverReplaced) {
   vesica::protect_input(dir / "made" / "mesh.msh");
   EXPECT_THROW(vesica::write_text_atomically(dir / "made" / "mesh.msh", "x"), vesica::Error);
   EXPECT_THROW(write_folder(dir / "made", "history.csv", "x"), vesica::Error);
-  EXPECT_EQ(read(dir / "made" / "mesh.msh"), "the input");
+  EXPECT_EQ(file_text(dir / "made" / "mesh.msh"), "the input");
 }
 
 TEST(OutputGuard, AFileAndAFolderNeverReplaceEachOther) {
   const fs::path dir = vesica::test::scratch_dir("guard-kind");
   vesica::write_text_atomically(dir / "out", "a file");
   EXPECT_THROW(write_folder(dir / "out", "x.txt", "x"), vesica::Error);
-  EXPECT_EQ(read(dir / "out"), "a file");
+  EXPECT_EQ(file_text(dir / "out"), "a file");
   write_folder(dir / "folder", "x.txt", "x");
   EXPECT_THROW(vesica::write_text_atomically(dir / "folder", "a file"), vesica::Error);
-  EXPECT_EQ(read(dir / "folder" / "x.txt"), "x");
+  EXPECT_EQ(file_text(dir / "folder" / "x.txt"), "x");
 }

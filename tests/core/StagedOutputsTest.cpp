@@ -11,12 +11,9 @@
 #include "vesica/core/StageRecord.h"
 
 namespace fs = std::filesystem;
+using vesica::test::file_text;
 
 namespace {
-
-std::string read(const fs::path& p) {
-  return vesica::test::file_text(p);
-}
 
 int entries(const fs::path& dir) {
   int n = 0;
@@ -32,10 +29,10 @@ TEST(StagedOutputs, AStageFailingAtItsLastOutputLeavesEveryEarlierOutputAsItWas)
   vesica::write_text_atomically(dir / "bladder.vtu", "old vtu");
   vesica::begin_staging();
   vesica::write_text_atomically(dir / "bladder.msh", "new mesh");
-  EXPECT_EQ(read(dir / "bladder.msh"), "old mesh");  // not yet replaced
-  vesica::discard_staged_outputs();                  // the .vtu failed
-  EXPECT_EQ(read(dir / "bladder.msh"), "old mesh");
-  EXPECT_EQ(read(dir / "bladder.vtu"), "old vtu");
+  EXPECT_EQ(file_text(dir / "bladder.msh"), "old mesh");  // not yet replaced
+  vesica::discard_staged_outputs();                       // the .vtu failed
+  EXPECT_EQ(file_text(dir / "bladder.msh"), "old mesh");
+  EXPECT_EQ(file_text(dir / "bladder.vtu"), "old vtu");
   EXPECT_EQ(entries(dir), 2);  // no temporary left
 }
 
@@ -55,8 +52,8 @@ TEST(StagedOutputs, ASuccessfulStageReplacesAllItsOutputsAndItsManifestNamesThei
   record.write(dir / "summary.json", dir / "manifest.json");
   EXPECT_FALSE(fs::exists(dir / "manifest.json"));
   vesica::commit_staged_outputs();
-  EXPECT_EQ(read(dir / "bladder.msh"), "new mesh");
-  EXPECT_EQ(read(dir / "sim" / "history.csv"), "time_s\n0\n");
+  EXPECT_EQ(file_text(dir / "bladder.msh"), "new mesh");
+  EXPECT_EQ(file_text(dir / "sim" / "history.csv"), "time_s\n0\n");
   std::ifstream m(dir / "manifest.json");
   const auto manifest = nlohmann::json::parse(m);
   EXPECT_EQ(manifest["outputs"][0]["hash"], vesica::content_hash(dir / "bladder.msh"));
