@@ -114,8 +114,11 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   {
     PhaseTimer t(record, "write");
     const fs::path out(o.output);
-    write_text_atomically(out / "metrics.json", metrics.dump(2) + "\n");
-    write_text_atomically(out / "index.html", report_html(in));
+    // One folder, replaced whole: never a new metrics.json beside an old index.html.
+    write_atomically(out, [&](const fs::path& tmp) {
+      write_text_atomically(tmp / "metrics.json", metrics.dump(2) + "\n");
+      write_text_atomically(tmp / "index.html", report_html(in));
+    });
     record.add_output(out / "index.html");
     record.add_output(out / "metrics.json");
   }

@@ -9,15 +9,21 @@ namespace {
 bool g_quiet = false;
 }
 
-void set_quiet(bool quiet) { g_quiet = quiet; }
-bool is_quiet() { return g_quiet; }
+void set_quiet(bool quiet) {
+  g_quiet = quiet;
+}
+bool is_quiet() {
+  return g_quiet;
+}
 
 Progress::Progress(std::string stage)
     : stage_(std::move(stage)),
       start_(std::chrono::steady_clock::now()),
       enabled_(!g_quiet && ::isatty(STDERR_FILENO)) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::update(const std::string& step, double fraction) {
   if (!enabled_) return;

@@ -6,6 +6,8 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
+#include "vesica/core/StageSafety.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/core/Version.h"
 
@@ -70,13 +72,25 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
   }
   set_quiet(options.json);
   configure_logging(options.json, options.verbose);
+  ignore_file_size_signal();
+  // The printed line, tool name included, stays within kMaxErrorLine.
+  const auto error_line = [&](const char* what) { return single_line(tool + ": error: " + what); };
   try {
-    return body();
+    protect_command_line_inputs(app);
+    begin_staging();  // every output replaced together, and only on success
+    const int code = body();
+    if (code == 0)
+      commit_staged_outputs();
+    else
+      discard_staged_outputs();
+    return code;
   } catch (const Error& e) {
-    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    discard_staged_outputs();
+    std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return e.exit_code();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    discard_staged_outputs();
+    std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return 1;
   }
 }

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "OutputPlaces.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/ParameterCheck.h"
 #include "vesica/pipelines/StudyExpansion.h"
@@ -362,7 +363,9 @@ fs::path Plan::in_workdir(const std::string& path) const {
 }
 
 Plan build_plan(const PipelineSpec& spec, const PlanOptions& options, Diagnostics& diagnostics) {
-  return Planner(spec, options, diagnostics).build();
+  Plan plan = Planner(spec, options, diagnostics).build();
+  detail::check_output_places(plan, spec, diagnostics);
+  return plan;
 }
 
 }  // namespace vesica::pipelines

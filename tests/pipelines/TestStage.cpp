@@ -11,6 +11,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/core/StagedOutputs.h"
 
 namespace fs = std::filesystem;
 
@@ -81,7 +82,10 @@ int main(int argc, char** argv) {
     record.add_output(output);
     record.summary()["bytes"] = text.size();
     record.write(common.report, vesica::default_manifest_path(common, output));
-    if (fail_after_writing) vesica::fail(output, "told to fail after writing");
+    if (fail_after_writing) {  // as vesica-simulate keeps a stalled run's results
+      vesica::commit_staged_outputs();
+      vesica::fail(output, "told to fail after writing");
+    }
     return 0;
   });
 }
