@@ -51,7 +51,8 @@ std::vector<std::string> candidates(const PlannedStage& s, const Known& k) {
 bool needs_backup(const Plan& plan, const std::string& path, const Known& k) {
   const auto record = std::find_if(k.records.begin(), k.records.end(),
                                    [&](const FileRecord& r) { return r.path == path; });
-  if (record == k.records.end()) return true;  // vesica did not write what is there
+  // A folder whose recorded files are candidates of their own.
+  if (record == k.records.end()) return !recorded(k.records, path);
   if (std::count(k.accepted.begin(), k.accepted.end(), path)) return true;
   return compare_with_record(plan.in_workdir(path), *record, k.written) == FileState::Changed;
 }

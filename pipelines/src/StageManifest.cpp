@@ -1,8 +1,10 @@
 #include "vesica/pipelines/StageManifest.h"
 
+#include <algorithm>
 #include <fstream>
 
 #include "vesica/core/ContentHash.h"
+#include "vesica/pipelines/PathIndex.h"
 
 namespace fs = std::filesystem;
 
@@ -40,6 +42,11 @@ const FileRecord* StageManifest::output(const std::string& path) const {
   for (const auto& r : outputs)
     if (r.path == path) return &r;
   return nullptr;
+}
+
+bool recorded(const std::vector<FileRecord>& records, const std::string& path) {
+  return std::any_of(records.begin(), records.end(),
+                     [&](const FileRecord& r) { return inside_or_equal(r.path, path); });
 }
 
 std::optional<StageManifest> read_stage_manifest(const fs::path& path) {

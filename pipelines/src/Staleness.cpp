@@ -118,10 +118,8 @@ StageStatus without_manifest(const Plan& plan, const PlannedStage& s) {
   std::string other;
   compare_outputs(plan, failure->outputs_before, fs::file_time_type::min(), edited, other);
   std::error_code ec;
-  const std::string& out = s.output;
-  const bool recorded = std::any_of(failure->outputs_before.begin(), failure->outputs_before.end(),
-                                    [&](const FileRecord& r) { return r.path == out; });
-  if (!recorded && fs::exists(plan.in_workdir(out), ec)) edited.push_back(out);
+  if (!recorded(failure->outputs_before, s.output) && fs::exists(plan.in_workdir(s.output), ec))
+    edited.push_back(s.output);
   if (!edited.empty()) return edited_status(s, edited, failure->describe());
   return {Freshness::Failed, failure->describe(), {}};
 }

@@ -26,6 +26,10 @@ struct StageManifest {
   const FileRecord* output(const std::string& path) const;
 };
 
+// Whether `records` say what is at `path`: a record of it, or of files inside it (a stage
+// writing a folder may record the files it wrote there, as vesica-simulate does).
+bool recorded(const std::vector<FileRecord>& records, const std::string& path);
+
 // nullopt when there is no manifest at `path`.
 std::optional<StageManifest> read_stage_manifest(const std::filesystem::path& path);
 
