@@ -21,6 +21,7 @@ FileRecord record_at(const Plan& plan, const std::string& path) {
 
 std::vector<std::string> paths_of(const std::vector<FileRecord>& records) {
   std::vector<std::string> out;
+  out.reserve(records.size());
   for (const auto& r : records) out.push_back(r.path);
   return out;
 }

@@ -39,6 +39,7 @@ ChildProcess::ChildProcess(const std::filesystem::path& executable,
   std::vector<std::string> args = {executable.string()};
   args.insert(args.end(), argv.begin(), argv.end());
   std::vector<char*> c_args;
+  c_args.reserve(args.size() + 1);
   for (auto& a : args) c_args.push_back(a.data());
   c_args.push_back(nullptr);
   const std::string dir = cwd.string();

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "Joined.h"
 #include "RunnerTerminal.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Suggest.h"
@@ -28,6 +29,8 @@ namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
 namespace {
+
+using detail::joined;
 
 constexpr const char* kHelp = R"(vesica — CT to bladder simulation, driven by a pipeline file
 
@@ -124,12 +127,6 @@ int parameters(int argc, char** argv) {
   else
     std::cout << parameter_reference_markdown(tool);
   return 0;
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
-  return out;
 }
 
 // "kept your edits: bladder.ply (surface); ..." and how to undo or adopt them.
@@ -252,42 +249,46 @@ int execute(const Loaded& l, RunOptions options, bool json) {
   return 0;
 }
 
-int run(int argc, char** argv) {
-  CLI::App app("Run the stale stages", "run");
+// What `run` and `reset` share: the file, the workdir, -j and --json.
+struct Execution {
   std::string file, workdir;
   bool json = false;
   RunOptions options;
-  app.add_option("file", file, "Pipeline file")->required();
-  app.add_option("--only", options.only, "Only these stages");
-  app.add_option("--from", options.from, "Rerun from these stages on");
-  app.add_flag("--force", options.force, "Run every selected stage");
-  app.add_option("--discard-edits", options.discard_edits,
+
+  void add_to(CLI::App& app) {
+    app.add_option("file", file, "Pipeline file")->required();
+    app.add_option("--workdir", workdir, "Outputs folder");
+    app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
+    app.add_flag("--json", json, "Print the result as JSON, no progress");
+  }
+  int operator()() const {
+    const Loaded l = load(file, workdir);
+    return l.exit_code ? l.exit_code : execute(l, options, json);
+  }
+};
+
+int run(int argc, char** argv) {
+  CLI::App app("Run the stale stages", "run");
+  Execution e;
+  e.add_to(app);
+  app.add_option("--only", e.options.only, "Only these stages");
+  app.add_option("--from", e.options.from, "Rerun from these stages on");
+  app.add_flag("--force", e.options.force, "Run every selected stage");
+  app.add_option("--discard-edits", e.options.discard_edits,
                  "Rerun these stages although their outputs were edited (saved first)");
-  app.add_option("--workdir", workdir, "Outputs folder");
-  app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
-  app.add_flag("-k,--keep-going", options.keep_going,
+  app.add_flag("-k,--keep-going", e.options.keep_going,
                "After a failure, run the stages that do not depend on it");
-  app.add_flag("--json", json, "Print the result as JSON, no progress");
   if (int rc = parse(app, argc, argv); rc >= 0) return rc;
-  Loaded l = load(file, workdir);
-  if (l.exit_code) return l.exit_code;
-  return execute(l, options, json);
+  return e();
 }
 
 int reset(int argc, char** argv) {
   CLI::App app("Regenerate the outputs of stages whose outputs were edited", "reset");
-  std::string file, workdir;
-  bool json = false;
-  RunOptions options;
-  app.add_option("file", file, "Pipeline file")->required();
-  app.add_option("stages", options.discard_edits, "Stages to regenerate")->required();
-  app.add_option("--workdir", workdir, "Outputs folder");
-  app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
-  app.add_flag("--json", json, "Print the result as JSON, no progress");
+  Execution e;
+  e.add_to(app);
+  app.add_option("stages", e.options.discard_edits, "Stages to regenerate")->required();
   if (int rc = parse(app, argc, argv); rc >= 0) return rc;
-  Loaded l = load(file, workdir);
-  if (l.exit_code) return l.exit_code;
-  return execute(l, options, json);
+  return e();
 }
 
 int accept(int argc, char** argv) {
@@ -336,7 +337,7 @@ int export_workflow(int argc, char** argv) {
 
 // Replaces this process with vesica-phantom, so its output and exit code are the user's.
 int phantom(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+  if (argc < 2 || argv[1][0] == '-') {
     std::fputs("usage: vesica phantom OUT_DIR [vesica-phantom options...]\n", stderr);
     return 2;
   }
@@ -344,6 +345,7 @@ int phantom(int argc, char** argv) {
   std::vector<std::string> args = {exe.string(), "-o", argv[1]};
   for (int i = 2; i < argc; ++i) args.emplace_back(argv[i]);
   std::vector<char*> c_args;
+  c_args.reserve(args.size() + 1);
   for (auto& a : args) c_args.push_back(a.data());
   c_args.push_back(nullptr);
   ::execv(c_args[0], c_args.data());

@@ -1,7 +1,6 @@
 #include "vesica/pipelines/EditBackup.h"
 
 #include <algorithm>
-#include <ctime>
 
 #include "vesica/core/Error.h"
 #include "vesica/pipelines/StageFailure.h"
@@ -60,12 +59,11 @@ bool needs_backup(const Plan& plan, const std::string& path, const Known& k) {
 }  // namespace
 
 std::string backup_stamp() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
-  return buf;
+  std::string stamp = utc_now_iso8601();  // 2026-11-24T23:01:09Z
+  stamp.erase(
+      std::remove_if(stamp.begin(), stamp.end(), [](char c) { return c == '-' || c == ':'; }),
+      stamp.end());
+  return stamp;
 }
 
 Backup back_up_outputs(const Plan& plan, std::size_t index) {

@@ -149,7 +149,8 @@ class Reader {
         if (map(x, where))
           for (const auto& in : x) {
             std::string name;
-            if (key_text(in.first, name) && scalar(in.second, where + "." + name))
+            if (key_text(in.first, name) &&
+                scalar(in.second, std::string(where).append(".").append(name)))
               s.named.push_back({name, {in.second.as<std::string>(), pos_of(in.second)}});
           }
       } else if (key == "output" || key == "report" || key == "manifest") {
@@ -205,7 +206,7 @@ class Reader {
     }
     if (x.IsSequence()) {
       for (const auto& item : x) {
-        if (!scalar(item, where + "." + key)) return false;
+        if (!scalar(item, std::string(where).append(".").append(key))) return false;
         if (!param.value.empty()) param.value += ",";
         param.value += item.as<std::string>();
       }
@@ -319,23 +320,16 @@ const StageSpec* PipelineSpec::find_stage(const std::string& stage_name) const {
 
 PipelineSpec parse_pipeline_text(const std::string& text, const fs::path& file,
                                  Diagnostics& diagnostics) {
-  YAML::Node root;
   try {
-    root = YAML::Load(text);
+    return Reader(file, diagnostics).read(YAML::Load(text));
   } catch (const YAML::ParserException& e) {
     diagnostics.add(pos_of(e.mark), "malformed YAML: " + e.msg);
-    PipelineSpec empty;
-    empty.file = file;
-    return empty;
-  }
-  try {
-    return Reader(file, diagnostics).read(root);
-  } catch (const YAML::Exception& e) {
+  } catch (const YAML::Exception& e) {  // what the reader's checks did not foresee
     diagnostics.add(pos_of(e.mark), "malformed pipeline file: " + e.msg);
-    PipelineSpec empty;
-    empty.file = file;
-    return empty;
   }
+  PipelineSpec empty;
+  empty.file = file;
+  return empty;
 }
 
 PipelineSpec load_pipeline_file(const fs::path& file, Diagnostics& diagnostics) {

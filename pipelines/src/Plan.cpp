@@ -127,7 +127,7 @@ class Planner {
   }
 
   std::string own_path(const PathRef& ref, const std::string& what, const StageSpec& s) {
-    const std::string p = normal_path(ref.text);
+    std::string p = normal_path(ref.text);
     if (fs::path(p).is_absolute() || p == ".." || p.compare(0, 3, "../") == 0)
       d_.add(ref.pos, "the " + what + " of stage '" + s.name +
                           "' must stay inside the workdir: " + ref.text);
@@ -254,9 +254,13 @@ class Planner {
       return (file == path ? "is" : "holds") + std::string(" the pipeline file ") + file;
     for (const auto& [name, abs] : externals_) {
       const std::string rel = normal_path(abs.lexically_relative(plan_.workdir).string());
-      if (!rel.empty() && rel.compare(0, 2, "..") != 0 && inside_or_equal(rel, path))
-        return (rel == path ? "is" : "holds") + std::string(" the external input '") + name +
-               "' (" + rel + ")";
+      if (rel.empty() || rel.compare(0, 2, "..") == 0 || !inside_or_equal(rel, path)) continue;
+      std::string what = rel == path ? "is" : "holds";
+      return what.append(" the external input '")
+          .append(name)
+          .append("' (")
+          .append(rel)
+          .append(")");
     }
     return "";
   }

@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 
+#include "Joined.h"
 #include "vesica/core/Error.h"
 #include "vesica/pipelines/ChildProcess.h"
 #include "vesica/pipelines/EditBackup.h"
@@ -20,6 +21,8 @@ namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
 namespace {
+
+using detail::joined;
 
 using Clock = std::chrono::steady_clock;
 
@@ -35,12 +38,6 @@ std::string without_tool_prefix(const std::string& progress) {
   if (progress.empty() || progress[0] != '[') return progress;
   const auto end = progress.find("] ");
   return end == std::string::npos ? progress : progress.substr(end + 2);
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
-  return out;
 }
 
 // The files a stage's run may leave at its outputs' places: the planned output and every

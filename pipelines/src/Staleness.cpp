@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "Joined.h"
 #include "vesica/pipelines/StageFailure.h"
 #include "vesica/pipelines/StageManifest.h"
 #include "vesica/pipelines/StateFolder.h"
@@ -11,6 +12,8 @@ namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
 namespace {
+
+using detail::joined;
 
 bool is_option(const std::string& token) {
   return token.size() > 1 && token[0] == '-';
@@ -53,12 +56,6 @@ std::vector<std::string> strings(const nlohmann::json& j) {
   if (j.is_array())
     for (const auto& x : j)
       if (x.is_string()) out.push_back(x.get<std::string>());
-  return out;
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
   return out;
 }
 

@@ -70,7 +70,7 @@ std::set<std::string> entries(const fs::path& dir) {
 // A user's empty folder, where `pipelines/` is the repository's (the README's commands
 // name pipelines/demo.yaml and pipelines/data/).
 fs::path user_folder(const std::string& name) {
-  const fs::path dir = scratch_dir(name) / "home";
+  fs::path dir = scratch_dir(name) / "home";
   fs::create_directories(dir);
   fs::create_directory_symlink(source_dir() / "pipelines", dir / "pipelines");
   return dir;

@@ -60,6 +60,19 @@ void wait_for_file(const fs::path& p) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
 }
 
+// `vesica run` started in the background on a -> b where b sleeps (its label names the
+// process); returns once b is running.
+struct SleepingRun {
+  fs::path dir, file;
+  pid_t runner;
+  SleepingRun(const std::string& name, const std::string& label) : dir(scratch_dir(name)) {
+    file = two_stages(dir, "label: " + label + ", sleep_ms: 30000");
+    runner = start_run(file, dir / "run.err");
+    wait_for_file(dir / "out/.vesica/b.failed.json");
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  }
+};
+
 }  // namespace
 
 TEST(RunnerProcess, ASecondRunWaitsForTheFirstAndSaysWhichProcessHoldsTheWorkdir) {
@@ -80,42 +93,34 @@ TEST(RunnerProcess, ASecondRunWaitsForTheFirstAndSaysWhichProcessHoldsTheWorkdir
 }
 
 TEST(RunnerProcess, TerminatingTheRunnerStopsItsStageAndSaysWhatWasInterrupted) {
-  const fs::path dir = scratch_dir("runner-sigterm");
-  const fs::path file = two_stages(dir, "label: runner-sigterm-stage, sleep_ms: 30000");
-  const pid_t runner = start_run(file, dir / "run.err");
-  wait_for_file(dir / "out/.vesica/b.failed.json");
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  ASSERT_TRUE(process_running("runner-sigterm-stage", dir));
-  ::kill(runner, SIGTERM);  // the runner alone, as `kill PID` does
-  EXPECT_EQ(wait_exit(runner), 128 + SIGTERM);
-  EXPECT_FALSE(process_running("runner-sigterm-stage", dir));  // waited for
-  const std::string err = slurp(dir / "run.err");
+  const SleepingRun r("runner-sigterm", "runner-sigterm-stage");
+  ASSERT_TRUE(process_running("runner-sigterm-stage", r.dir));
+  ::kill(r.runner, SIGTERM);  // the runner alone, as `kill PID` does
+  EXPECT_EQ(wait_exit(r.runner), 128 + SIGTERM);
+  EXPECT_FALSE(process_running("runner-sigterm-stage", r.dir));  // waited for
+  const std::string err = slurp(r.dir / "run.err");
   EXPECT_NE(err.find("vesica: SIGTERM: stopping b, waiting for it to end"), std::string::npos)
       << err;
   EXPECT_NE(err.find("vesica: interrupted by SIGTERM: b stopped and will run again; 1 stages "
                      "finished before"),
             std::string::npos)
       << err;
-  EXPECT_EQ(status_of(file, dir).at("b"),
+  EXPECT_EQ(status_of(r.file, r.dir).at("b"),
             std::make_pair(std::string("failed"), std::string("interrupted: SIGTERM")));
 }
 
 TEST(RunnerProcess, ARunnerKilledOutrightTakesItsStageWithIt) {
-  const fs::path dir = scratch_dir("runner-sigkill");
-  const fs::path file = two_stages(dir, "label: runner-sigkill-stage, sleep_ms: 30000");
-  const pid_t runner = start_run(file, dir / "run.err");
-  wait_for_file(dir / "out/.vesica/b.failed.json");
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  ASSERT_TRUE(process_running("runner-sigkill-stage", dir));
-  ::kill(runner, SIGKILL);
-  EXPECT_EQ(wait_exit(runner), 128 + SIGKILL);
+  const SleepingRun r("runner-sigkill", "runner-sigkill-stage");
+  ASSERT_TRUE(process_running("runner-sigkill-stage", r.dir));
+  ::kill(r.runner, SIGKILL);
+  EXPECT_EQ(wait_exit(r.runner), 128 + SIGKILL);
   bool gone = false;
   for (int i = 0; i < 40 && !gone; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    gone = !process_running("runner-sigkill-stage", dir);
+    gone = !process_running("runner-sigkill-stage", r.dir);
   }
   EXPECT_TRUE(gone);
-  EXPECT_EQ(status_of(file, dir).at("b"),
+  EXPECT_EQ(status_of(r.file, r.dir).at("b"),
             std::make_pair(std::string("failed"), std::string("interrupted: the run was killed")));
 }
 

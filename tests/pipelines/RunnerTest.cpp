@@ -35,6 +35,14 @@ struct Chain {
   }
 };
 
+// The chain run once, then b.txt saved by hand.
+Chain edited_chain(const std::string& name, const std::string& text = "mine\n") {
+  Chain c(name);
+  EXPECT_EQ(run_json(c.file, c.dir).size(), 4u);
+  write_text(c.out / "b.txt", text);
+  return c;
+}
+
 }  // namespace
 
 TEST(Runner, FirstRunRunsEverythingSecondRunNothing) {
@@ -54,9 +62,7 @@ TEST(Runner, FirstRunRunsEverythingSecondRunNothing) {
 }
 
 TEST(Runner, AnEditedIntermediateIsKeptAndEverythingAfterItReruns) {
-  Chain c("runner-edit");
-  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
-  write_text(c.out / "b.txt", "edited by hand\n");
+  const Chain c = edited_chain("runner-edit", "edited by hand\n");
   auto st = status_of(c.file, c.dir);
   EXPECT_EQ(st["a"].first, "fresh");
   EXPECT_EQ(st["b"], std::make_pair(std::string("edited"), std::string("b.txt")));
@@ -76,18 +82,14 @@ TEST(Runner, AnEditedIntermediateIsKeptAndEverythingAfterItReruns) {
 }
 
 TEST(Runner, ForceAndFromRerunAroundAnEditButNeverOverIt) {
-  Chain c("runner-edit-force");
-  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
-  write_text(c.out / "b.txt", "mine\n");
+  const Chain c = edited_chain("runner-edit-force");
   EXPECT_EQ(run_json(c.file, c.dir, "--force"), (Ids{"a", "c", "d"}));
   EXPECT_EQ(run_json(c.file, c.dir, "--from b"), (Ids{"c", "d"}));
   EXPECT_EQ(slurp(c.out / "b.txt"), "mine\n");
 }
 
 TEST(Runner, AnEditWinsOverAChangedParameterUntilReset) {
-  Chain c("runner-edit-param");
-  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
-  write_text(c.out / "b.txt", "mine\n");
+  const Chain c = edited_chain("runner-edit-param");
   const std::string changed =
       std::regex_replace(chain_yaml(), std::regex("label: B\\}"), "label: B2}");
   ASSERT_NE(changed, chain_yaml());
@@ -111,9 +113,7 @@ fs::path only_backup(const fs::path& out, const std::string& stage) {
 }
 
 TEST(Runner, ResetRegeneratesAnEditAndTheBackupHoldsIt) {
-  Chain c("runner-reset");
-  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
-  write_text(c.out / "b.txt", "mine\n");
+  const Chain c = edited_chain("runner-reset");
   ASSERT_EQ(run_json(c.file, c.dir), (Ids{"c", "d"}));
   const CommandResult r = run_vesica("reset " + quoted(c.file.string()) + " b", c.dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -128,9 +128,7 @@ TEST(Runner, ResetRegeneratesAnEditAndTheBackupHoldsIt) {
 }
 
 TEST(Runner, AcceptMakesAnEditTheStagesOwnAndALaterRerunStillSavesIt) {
-  Chain c("runner-accept");
-  ASSERT_EQ(run_json(c.file, c.dir).size(), 4u);
-  write_text(c.out / "b.txt", "mine\n");
+  const Chain c = edited_chain("runner-accept");
   const CommandResult r = run_vesica("accept " + quoted(c.file.string()) + " b", c.dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("b: b.txt accepted as its output"), std::string::npos) << r.err;

@@ -23,7 +23,7 @@ bool snakemake_missing(const fs::path& dir) {
 
 // Exports `file` for `workdir` and runs it with Snakemake.
 CommandResult snakemake(const fs::path& file, const fs::path& workdir, const fs::path& dir) {
-  const auto exported = run_vesica(
+  auto exported = run_vesica(
       "export --snakemake " + quoted(file.string()) + " --workdir " + quoted(workdir.string()),
       dir);
   if (exported.exit_code != 0) return exported;
@@ -32,6 +32,16 @@ CommandResult snakemake(const fs::path& file, const fs::path& workdir, const fs:
       "cd " + quoted(dir.string()) + " && snakemake -s Snakefile -j 2 --cores 2 --quiet", dir);
   sm.err += "\n" + exported.out;
   return sm;
+}
+
+// Runs `file` in `native` with `vesica run` and in `snake` with Snakemake; the number of
+// stages `vesica run` ran.
+std::size_t run_both(const fs::path& file, const fs::path& native, const fs::path& snake,
+                     const fs::path& dir) {
+  const std::size_t ran = run_json(file, dir, "--workdir " + quoted(native.string())).size();
+  const auto sm = snakemake(file, snake, dir);
+  EXPECT_EQ(sm.exit_code, 0) << sm.err;
+  return ran;
 }
 
 }  // namespace
@@ -55,10 +65,7 @@ TEST(SnakemakeExport, SnakemakeProducesTheNativeRunnersOutputs) {
              "study:\n"
              "  variants: {one: {}, two: {b.label: B2}}\n");
   const fs::path native = dir / "native", snake = dir / "snake";
-  ASSERT_EQ(run_json(file, dir, "--workdir " + quoted(native.string())).size(), 5u);
-  const auto sm = snakemake(file, snake, dir);
-  ASSERT_EQ(sm.exit_code, 0) << sm.err;
-
+  ASSERT_EQ(run_both(file, native, snake, dir), 5u);
   for (const std::string out :
        {"a.txt", "sim", "report/c.txt", "variants/two/sim", "variants/two/report/c.txt"})
     EXPECT_EQ(vesica::content_hash(snake / out), vesica::content_hash(native / out)) << out;
@@ -81,9 +88,7 @@ TEST(SnakemakeExport, SnakemakeKeepsAnEditedIntermediateAsTheNativeRunnerDoes) {
              "  f: {tool: teststage, input: a.txt, output: fold, params: {label: F, dir: true}}\n"
              "  g: {tool: teststage, input: fold/data.txt, output: g.txt, params: {label: G}}\n");
   const fs::path native = dir / "native", snake = dir / "snake";
-  ASSERT_EQ(run_json(file, dir, "--workdir " + quoted(native.string())).size(), 5u);
-  const auto first = snakemake(file, snake, dir);
-  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ASSERT_EQ(run_both(file, native, snake, dir), 5u);
   for (const fs::path& w : {native, snake}) {
     write_text(w / "b.txt", "b edited by hand\n");
     write_text(w / "fold/data.txt", "fold edited by hand\n");
