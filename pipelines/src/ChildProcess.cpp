@@ -55,6 +55,9 @@ ChildProcess::ChildProcess(const std::filesystem::path& executable,
     ::setpgid(0, 0);
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() != parent) ::_exit(129);  // the runner died before prctl took effect
+    // Not the terminal's: in a process group of its own, a read from it would stop the stage.
+    const int no_input = ::open("/dev/null", O_RDONLY);
+    if (no_input >= 0) ::dup2(no_input, STDIN_FILENO);
     ::dup2(fds[1], STDOUT_FILENO);
     ::dup2(fds[1], STDERR_FILENO);
     if (::chdir(dir.c_str()) != 0) ::_exit(126);
