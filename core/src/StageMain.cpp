@@ -98,14 +98,16 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
 std::string default_manifest_path(const CommonOptions& options, const std::string& output) {
   if (!options.manifest.empty()) return options.manifest;
   namespace fs = std::filesystem;
+  // In the hidden folder .vesica/ (where `vesica run` keeps its manifests too), so that a
+  // stage leaves beside its outputs only the files it was asked for.
   if (!options.report.empty()) {
     fs::path r(options.report);
-    return (r.parent_path() / (r.stem().string() + ".manifest.json")).string();
+    return (r.parent_path() / ".vesica" / (r.stem().string() + ".manifest.json")).string();
   }
   // "ct/" is the folder "ct": its manifest goes beside it, not inside it.
   fs::path out = fs::path(output).lexically_normal();
   if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();
-  return out.string() + ".manifest.json";
+  return (out.parent_path() / ".vesica" / (out.filename().string() + ".manifest.json")).string();
 }
 
 }  // namespace vesica
