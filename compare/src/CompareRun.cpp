@@ -67,7 +67,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
       measured = std::make_unique<RecordingAnalysis>(
-          analyse(io::read_recording(o.measured, measured_reader), o.artefacts));
+          analyse(io::read_recording(o.measured, measured_reader), o.artefacts,
+                  RecordingFacts{o.fill_rate_ml_min, o.capacity_ml}));
       record.add_input(o.measured);
     }
     if (!o.simulated.empty()) {

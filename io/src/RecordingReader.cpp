@@ -168,10 +168,14 @@ std::optional<double> parse_number(const std::string& cell) {
   return v;
 }
 
-std::string format_seconds(double s) {
+std::string format_number(double v) {
   std::ostringstream o;
-  o << s << " s";
+  o << v;
   return o.str();
+}
+
+std::string format_seconds(double s) {
+  return format_number(s) + " s";
 }
 
 std::vector<double>* target(Recording& r, const std::string& key) {
@@ -202,16 +206,30 @@ std::vector<BoundColumn> bind_columns(const std::vector<std::string>& header,
                        [&](const BoundColumn& b) { return std::string(b.channel->key) == key; });
   };
   const std::string hint = "map it with --columns KEY=NAME";
-  if (!has("time")) fail(file, "missing column for time (time_s, time_min or time)", hint);
   if (!has("pdet") && !(has("pves") && has("pabd")))
     fail(file, "missing columns for pressure (pdet_cmh2o, or pves_cmh2o and pabd_cmh2o)", hint);
-  if (!has("infused") && !has("volume"))
-    fail(file, "missing column for volume (infused_ml or volume_ml)", hint);
+  const bool filled = has("infused") || has("volume");
+  if (has("time") && !filled && !has("voided") && !has("flow"))
+    fail(file, "missing column for volume (infused_ml, volume_ml, voided_ml or flow_ml_s)", hint);
+  if (!has("time") && !filled && !has("voided"))
+    fail(file,
+         "missing column for time, or for the volume a table without time is read at "
+         "(infused_ml or volume_ml: filling; voided_ml: voiding)",
+         hint);
   return bound;
 }
 
+// The channel that orders the rows: time, else (a table read off at volume steps) the
+// infused, bladder or voided volume.
+const char* row_order_key(const std::vector<BoundColumn>& bound) {
+  for (const char* key : {"time", "infused", "volume", "voided"})
+    for (const auto& b : bound)
+      if (std::string(b.channel->key) == key) return key;
+  return "time";
+}
+
 void read_cell(const BoundColumn& b, const std::string& cell, int line, const std::string& file,
-               Recording& r) {
+               const std::string& order_key, Recording& r) {
   const std::string place =
       "row " + std::to_string(line) + ", column \"" + b.header + "\": \"" + cell + "\"";
   if (b.channel->quantity == Quantity::Text) {
@@ -225,11 +243,15 @@ void read_cell(const BoundColumn& b, const std::string& cell, int line, const st
     v = *n * b.factor;
   if (!v) fail(file, place + " is not a number");
   auto* values = target(r, b.channel->key);
-  if (b.channel->quantity == Quantity::Time && !values->empty() && *v < values->back())
-    fail(file,
-         place + " goes back in time (" + format_seconds(*v) + " after " +
-             format_seconds(values->back()) + ")",
-         "rows must be sorted by time");
+  if (b.channel->key == order_key && !values->empty() && *v < values->back()) {
+    if (b.channel->quantity == Quantity::Time)
+      fail(file,
+           place + " goes back in time (" + format_seconds(*v) + " after " +
+               format_seconds(values->back()) + ")",
+           "rows must be sorted by time");
+    fail(file, place + " is below the row before it (" + format_number(values->back()) + ")",
+         "a table without time must be sorted by its volume");
+  }
   values->push_back(*v);
 }
 
@@ -276,8 +298,10 @@ Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& 
   Recording r;
   r.source = file;
   r.line = table.line;
+  const std::string order_key = row_order_key(bound);
   for (std::size_t row = 0; row < table.row_count(); ++row)
-    for (const auto& b : bound) read_cell(b, table.rows[row][b.index], table.line[row], file, r);
+    for (const auto& b : bound)
+      read_cell(b, table.rows[row][b.index], table.line[row], file, order_key, r);
   if (r.rows() < options.min_rows)
     fail(file, options.min_rows == 2
                    ? "fewer than two data rows"
