@@ -89,9 +89,12 @@ SeriesValues filling_values(const TargetSeries& s, const SimulatedCurves& c, con
   return v;
 }
 
-// After a completed run's flow stopped, its flow is zero and its pressure unknown.
+// Beyond the end of a completed run's voiding (later than its flow, or more voided than it
+// voided) its flow is zero: a measured flow there is a true misfit, which keeps a run that
+// voids too little from looking better for being compared at fewer readings. Its pressure
+// there is unknown (not compared).
 double after_end(const TargetSeries& s) {
-  return s.quantity == Quantity::Flow && s.abscissa == Abscissa::TimeSinceFlowOnset ? 0.0 : kNaN;
+  return s.quantity == Quantity::Flow ? 0.0 : kNaN;
 }
 
 SeriesValues voiding_values(const TargetSeries& s, const Curve& curve, const ModelRun& run,

@@ -1,6 +1,7 @@
 #pragma once
 // Levenberg–Marquardt (Eigen's MINPACK port, unsupported/NonLinearOptimization) over a
-// FitObjective in u = ln p, stopped by the objective's simulation budget.
+// FitObjective, within the parameters' bounds (a smooth bounded transform of u = ln p),
+// stopped by the objective's simulation budget.
 #include <string>
 
 #include <Eigen/Dense>

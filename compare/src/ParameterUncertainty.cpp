@@ -100,7 +100,9 @@ std::vector<ParameterUncertainty> parameter_uncertainty(const Eigen::MatrixXd& J
       const double factor = std::exp(2 * kZ95 * se);
       u.identifiable = factor < kMaxIntervalFactor;
       if (!u.identifiable)
-        u.reason = "the data allow a factor of " + fixed(factor, 3) + " (95 % interval)";
+        u.reason = "the data allow a factor of " +
+                   (factor > 1e3 ? std::string("more than 1000") : fixed(factor, 3)) +
+                   " (95 % interval)";
       for (Eigen::Index k = 0; k < m; ++k) {
         if (k == j || !determined[static_cast<std::size_t>(k)]) continue;
         const double c = cov(j, k) / std::sqrt(cov(j, j) * cov(k, k));

@@ -9,6 +9,7 @@
 #include "LeastSquares.h"
 #include "vesica/compare/Baselines.h"
 #include "vesica/compare/ParameterUncertainty.h"
+#include "vesica/core/Log.h"
 
 namespace vesica::compare {
 namespace {
@@ -65,6 +66,12 @@ struct StageLog {
   std::vector<std::string> notes;
 };
 
+void log_values(const char* what, const std::vector<double>& values, const std::string& status) {
+  std::string text;
+  for (double v : values) text += " " + number(v);
+  vesica::log()->debug("{}:{} ({})", what, text, status);
+}
+
 // Stage 1: multi-start least squares on the surrogate; the optima that ran, best first.
 std::vector<Candidate> surrogate_search(FitObjective& surrogate, const Eigen::VectorXd& u0,
                                         const FitBudget& budget, StageLog& log) {
@@ -77,6 +84,7 @@ std::vector<Candidate> surrogate_search(FitObjective& surrogate, const Eigen::Ve
     log.iterations += o.iterations;
     const auto* point = surrogate.at(o.u);
     if (point && !point->evaluation.failed) found.push_back({o.u, point->cost});
+    log_values("surrogate optimum", surrogate.values(o.u), o.status);
   }
   std::sort(found.begin(), found.end(),
             [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
@@ -98,6 +106,7 @@ std::optional<Eigen::VectorXd> refine_by_mapping(FitObjective& model, FitObjecti
     }
     log.notes.push_back("the model could not run a surrogate optimum: " +
                         current->evaluation.failure);
+    log_values("model failed at", model.values(c.u), current->evaluation.failure);
     current = nullptr;
   }
   if (!current) return std::nullopt;
@@ -110,9 +119,11 @@ std::optional<Eigen::VectorXd> refine_by_mapping(FitObjective& model, FitObjecti
     const LeastSquaresOutcome o = least_squares(surrogate, u, per_mapping);
     surrogate.clear_offset();
     log.iterations += o.iterations;
+    log_values("mapped step", surrogate.values(o.u), o.status);
     if ((o.u - u).lpNorm<Eigen::Infinity>() < 1e-3) break;  // the mapping is at rest
     const auto* next = model.at(o.u);
     if (!next) break;
+    vesica::log()->debug("model cost {:.4g} (was {:.4g})", next->cost, current->cost);
     if (next->evaluation.failed) {
       log.notes.push_back("a mapped step failed on the model: " + next->evaluation.failure);
       break;
@@ -224,6 +235,14 @@ std::vector<ParameterUncertainty> uncertainty(const Eigen::MatrixXd& J, const Ev
 
 std::string verdict(const CalibrationResult& r) {
   std::ostringstream o;
+  for (const auto& s : r.series) {
+    if (s.measured.x.size() < 3 || 2 * s.points >= s.measured.x.size()) continue;
+    o << "not a fit: the model covers " << s.points << " of the " << s.measured.x.size() << " "
+      << s.name << " readings";
+    return o.str();
+  }
+  if (std::none_of(r.series.begin(), r.series.end(), judged))
+    return "not judged: no series has three readings to compare with a straight line";
   for (const auto& s : r.series) {
     if (!judged(s) || s.beats_line) continue;
     o << "no better than a straight line: " << s.name << " RMSE " << number(s.rmse) << " " << s.unit

@@ -83,12 +83,12 @@ TEST(RecordingFormats, AVoidingTableGivesThePressureFlowParametersThatNeedNoTime
   EXPECT_DOUBLE_EQ(*p.voided_ml, 300);
   EXPECT_DOUBLE_EQ(*p.pvr_ml, 20);  // 320 before voiding - 300 voided
   EXPECT_DOUBLE_EQ(*p.voiding_efficiency, 300.0 / 320.0);
-  EXPECT_DOUBLE_EQ(*p.qmax_ml_s, 22);        // the 150 ml row
-  EXPECT_DOUBLE_EQ(*p.pdet_qmax_cmh2o, 38);  // at that row
+  EXPECT_DOUBLE_EQ(*p.qmax_ml_s, 22);               // the 150 ml row
+  EXPECT_DOUBLE_EQ(*p.pdet_qmax_cmh2o, 38);         // at that row
   EXPECT_DOUBLE_EQ(*p.pdet_opening_cmh2o, 32);      // 25 ml, the first row with flow
   EXPECT_DOUBLE_EQ(*p.pdet_closing_cmh2o, 30);      // 290 ml, the last row with flow
   EXPECT_DOUBLE_EQ(*p.pdet_max_voiding_cmh2o, 40);  // 100 ml
-  EXPECT_DOUBLE_EQ(*p.booi, 38 - 2 * 22);  // -6
+  EXPECT_DOUBLE_EQ(*p.booi, 38 - 2 * 22);           // -6
   EXPECT_EQ(p.booi_class, "unobstructed");
   EXPECT_DOUBLE_EQ(*p.bci, 38 + 5 * 22);  // 148
   EXPECT_EQ(p.bci_class, "normal");

@@ -11,8 +11,9 @@
 //
 // A run that stops before a series' last measured abscissa is a failed evaluation: every
 // residual is then the penalty kFailedResidual, never a value read off beyond the end of
-// the run. A run that completed its protocol is different: after its flow stopped its flow
-// is zero (a measured flow there is a true misfit), and its pressure there is not compared.
+// the run. A run that completed its protocol is different: beyond the end of its voiding
+// (in time or voided volume) its flow is zero (a measured flow there is a true misfit), and
+// its pressure there is not compared.
 #include <optional>
 #include <string>
 #include <vector>
