@@ -49,6 +49,7 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
   if (cal) {
     for (const auto& fp : cal->parameters) j["fitted_" + fp.name] = fp.value;
     j["fit_rmse_cmh2o"] = cal->rmse_cmh2o;
+    j["fit_status"] = cal->status;  // "fitted: ...", "no better than a straight line: ..."
   }
   return j;
 }
