@@ -135,7 +135,7 @@ simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m) {
   return wall;
 }
 
-CalibrationOutcome calibrate(const CalibrationProblem& pb) {
+FitOutcome calibrate(const CalibrationProblem& pb) {
   if (pb.targets.size() < 2)
     usage_error("--calibrate: fewer than two measured readings to fit",
                 "check --fit-volume-ml against the recording's volumes");
@@ -157,8 +157,7 @@ CalibrationOutcome calibrate(const CalibrationProblem& pb) {
         "sphere of " + std::to_string(sphere.wall.triangle_count()) + " triangles (surrogate)";
   }
   fit.budget = pb.budget;
-  FitOutcome o = fit_parameters(fit);
-  return {std::move(o.result), std::move(o.final_run)};
+  return fit_parameters(fit);
 }
 
 }  // namespace vesica::compare

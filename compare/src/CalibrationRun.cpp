@@ -127,7 +127,7 @@ CalibrationResult calibrate_from_options(const CompareOptions& o, const Recordin
   pb.use_surrogate = o.simulation.surrogate;
   pb.budget.surrogate_starts = o.simulation.surrogate_starts;
   pb.budget.model_simulations = o.max_simulations;
-  CalibrationOutcome out = calibrate(pb);
+  FitOutcome out = calibrate(pb);
   if (voiding) out.result.voiding = voiding_agreement(a, out.final_run.recording);
   notes.push_back(fmt::format("the model fills at {:.3g} ml/min from {:g} ml",
                               pb.model.protocol.fill_rate_ml_min, pb.model.protocol.start_ml));

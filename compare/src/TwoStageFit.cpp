@@ -266,6 +266,19 @@ CalibrationStage stage(const char* name, const std::string& model, const FitObje
   return {name, model, f.simulations(), f.failures(), seconds, cost};
 }
 
+// Parameters the fit could not assess: no error, the search range as interval.
+std::vector<ParameterUncertainty> undetermined(const std::vector<FitParameter>& params,
+                                               const std::string& reason) {
+  std::vector<ParameterUncertainty> u(params.size());
+  for (std::size_t j = 0; j < u.size(); ++j) {
+    u[j].ci_low = params[j].lower;
+    u[j].ci_high = params[j].upper;
+    u[j].standard_error = HUGE_VAL;
+    u[j].reason = reason;
+  }
+  return u;
+}
+
 void all_failed(const FitProblem& pb, const FitObjective& model, const FitObjective* surrogate,
                 CalibrationResult& r) {
   const int runs = model.simulations() + (surrogate ? surrogate->simulations() : 0);
@@ -273,14 +286,7 @@ void all_failed(const FitProblem& pb, const FitObjective& model, const FitObject
              " runs stopped before the end of the data; nothing was fitted";
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);
-  std::vector<ParameterUncertainty> none(pb.parameters.size());
-  for (std::size_t j = 0; j < none.size(); ++j) {
-    none[j].ci_low = pb.parameters[j].lower;
-    none[j].ci_high = pb.parameters[j].upper;
-    none[j].standard_error = HUGE_VAL;
-    none[j].reason = "not fitted";
-  }
-  fill_parameters(pb.parameters, start, none, r);
+  fill_parameters(pb.parameters, start, undetermined(pb.parameters, "not fitted"), r);
   for (const auto& f : model.failure_summary()) r.notes.push_back(pb.model_name + ": " + f);
   if (surrogate)
     for (const auto& f : surrogate->failure_summary())
@@ -341,18 +347,9 @@ FitOutcome fit_parameters(const FitProblem& pb) {
       J = surrogate->jacobian(*best, &r.notes);
       r.notes.push_back("intervals from the surrogate's Jacobian: the model's budget is spent");
     }
-    std::vector<ParameterUncertainty> u;
-    if (J) {
-      u = uncertainty(*J, at_best, pb.parameters, values);
-    } else {
-      u.resize(pb.parameters.size());
-      for (auto& x : u) x.reason = "no Jacobian: the simulation budget is spent";
-      for (std::size_t j = 0; j < u.size(); ++j) {
-        u[j].ci_low = pb.parameters[j].lower;
-        u[j].ci_high = pb.parameters[j].upper;
-        u[j].standard_error = HUGE_VAL;
-      }
-    }
+    const std::vector<ParameterUncertainty> u =
+        J ? uncertainty(*J, at_best, pb.parameters, values)
+          : undetermined(pb.parameters, "no Jacobian: the simulation budget is spent");
     fill_parameters(pb.parameters, values, u, r);
     // The fitted model over the whole data: it has to get there.
     out.final_run = pb.final_model ? pb.final_model(values) : model.at(*best)->run;

@@ -57,12 +57,8 @@ struct CalibrationProblem {
   FitBudget budget;
 };
 
-struct CalibrationOutcome {
-  CalibrationResult result;
-  ModelRun final_run;  // the fitted model over the whole data
-};
-
-CalibrationOutcome calibrate(const CalibrationProblem& problem);
+// The result and the fitted model's run over the whole data.
+FitOutcome calibrate(const CalibrationProblem& problem);
 
 // A simulation history as a Recording (so simulated curves use the history.csv definitions).
 Recording recording_from_history(const std::vector<simulate::HistoryRow>& history);
