@@ -28,7 +28,7 @@ std::string fixed(double v, int digits) {
 Eigen::MatrixXd covariance(const Eigen::MatrixXd& J, double sigma2, std::vector<bool>& determined) {
   const Eigen::Index m = J.cols();
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
-  const Eigen::VectorXd s = svd.singularValues();
+  const Eigen::VectorXd& s = svd.singularValues();
   const Eigen::MatrixXd& V = svd.matrixV();
   determined.assign(static_cast<std::size_t>(m), true);
   Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(m, m);
