@@ -135,6 +135,13 @@ simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m) {
   return wall;
 }
 
+CystometryModel surrogate_of(const CystometryModel& model) {
+  CystometryModel surrogate = model;
+  const double thickness = model.wall.thickness.empty() ? 3e-3 : model.wall.thickness[0];
+  surrogate.wall = surrogate_sphere(model.protocol.start_ml, thickness);
+  return surrogate;
+}
+
 FitOutcome calibrate(const CalibrationProblem& pb) {
   if (pb.targets.size() < 2)
     usage_error("--calibrate: fewer than two measured readings to fit",
@@ -149,12 +156,10 @@ FitOutcome calibrate(const CalibrationProblem& pb) {
   const double end = std::max(capacity, pb.data_end_ml);
   if (end > capacity) fit.final_model = cystometry_simulator(pb.model, pb.parameters, end, voiding);
   if (pb.use_surrogate) {
-    CystometryModel sphere = pb.model;
-    const double thickness = pb.model.wall.thickness.empty() ? 3e-3 : pb.model.wall.thickness[0];
-    sphere.wall = surrogate_sphere(pb.model.protocol.start_ml, thickness);
-    fit.surrogate = cystometry_simulator(sphere, pb.parameters, capacity, voiding);
+    const CystometryModel surrogate = surrogate_of(pb.model);
+    fit.surrogate = cystometry_simulator(surrogate, pb.parameters, capacity, voiding);
     fit.surrogate_name =
-        "sphere of " + std::to_string(sphere.wall.triangle_count()) + " triangles (surrogate)";
+        "sphere of " + std::to_string(surrogate.wall.triangle_count()) + " triangles (surrogate)";
   }
   fit.budget = pb.budget;
   return fit_parameters(fit);

@@ -47,6 +47,8 @@ ModelSimulator cystometry_simulator(const CystometryModel& base,
 
 // The interim surrogate wall: a sphere of `reference_ml` with the thickness `thickness_m`.
 simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m);
+// The fast surrogate of a model: the same material and protocol on the surrogate wall.
+CystometryModel surrogate_of(const CystometryModel& model);
 
 struct CalibrationProblem {
   CystometryModel model;  // start values; fitted entries overwritten per run
