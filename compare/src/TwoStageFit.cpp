@@ -295,6 +295,88 @@ void all_failed(const FitProblem& pb, const FitObjective& model, const FitObject
 
 }  // namespace
 
+namespace {
+
+// Stages 1 and 2: the optimum on the model, or none when no run reached the data's end.
+std::optional<Eigen::VectorXd> find_optimum(const FitProblem& pb, FitObjective& model,
+                                            std::optional<FitObjective>& surrogate,
+                                            const Eigen::VectorXd& u0, int reserve, StageLog& log,
+                                            CalibrationResult& r) {
+  std::optional<Eigen::VectorXd> best;
+  const int refine_budget = pb.budget.model_simulations - reserve;
+  auto cost = [&] { return best ? model.at(*best)->cost : HUGE_VAL; };
+  if (!pb.surrogate) {
+    const auto tm = Clock::now();
+    best = refine_directly(model, u0, refine_budget, log);
+    r.stages.push_back(stage("model fit", pb.model_name, model, seconds_since(tm), cost()));
+    return best;
+  }
+  const auto ts = Clock::now();
+  surrogate.emplace(pb.parameters, pb.targets, pb.surrogate, pb.budget.surrogate_simulations);
+  const auto candidates = surrogate_search(*surrogate, u0, pb.budget, log);
+  r.stages.push_back(stage("surrogate search", pb.surrogate_name, *surrogate, seconds_since(ts),
+                           candidates.empty() ? HUGE_VAL : candidates.front().cost));
+  const auto tm = Clock::now();
+  model.set_budget(refine_budget);
+  best = refine_by_mapping(model, *surrogate, candidates, pb.budget, log);
+  if (!best && !model.spent()) {
+    log.notes.push_back("no surrogate optimum ran on the model: fitted on the model directly");
+    best = refine_directly(model, u0, refine_budget - model.simulations(), log);
+  }
+  r.stages.push_back(stage("model refinement (output space mapping)", pb.model_name, model,
+                           seconds_since(tm), cost()));
+  return best;
+}
+
+// Step 3 and 4: intervals at the optimum, the final run over the whole data, the verdict.
+void report_optimum(const FitProblem& pb, FitObjective& model, FitObjective* surrogate,
+                    const Eigen::VectorXd& best, FitOutcome& out) {
+  CalibrationResult& r = out.result;
+  const std::vector<double> values = model.values(best);
+  const Evaluation at_best = model.at(best)->evaluation;
+  auto J = model.jacobian(best, &r.notes);
+  if (!J && surrogate) {
+    J = surrogate->jacobian(best, &r.notes);
+    r.notes.push_back("intervals from the surrogate's Jacobian: the model's budget is spent");
+  }
+  const std::vector<ParameterUncertainty> u =
+      J ? uncertainty(*J, at_best, pb.parameters, values)
+        : undetermined(pb.parameters, "no Jacobian: the simulation budget is spent");
+  fill_parameters(pb.parameters, values, u, r);
+  out.final_run = pb.final_model ? pb.final_model(values) : model.at(best)->run;
+  const Evaluation final_eval = evaluate(pb.targets, out.final_run);
+  fill_series(pb.targets, final_eval.failed ? at_best : final_eval, r);
+  if (!out.final_run.completed || final_eval.failed) {
+    r.status = "failed: the fitted model does not reach the end of the data (" +
+               (final_eval.failed ? final_eval.failure : out.final_run.failure) + ")";
+  } else {
+    r.status = verdict(r);
+    r.fitted = r.status.rfind("fitted", 0) == 0;
+  }
+  const Recording& fitted = out.final_run.recording;
+  r.fitted_filling =
+      filling_curve(fitted, compute_ics(fitted, {}), std::vector<bool>(fitted.rows(), false));
+}
+
+// Every run of each stage, the Jacobian's and the mappings' included.
+void count_runs(const FitObjective& model, const FitObjective* surrogate, int final_runs,
+                CalibrationResult& r) {
+  r.stages.back().simulations = model.simulations();
+  r.stages.back().failed = model.failures();
+  if (surrogate) {
+    r.stages.front().simulations = surrogate->simulations();
+    r.stages.front().failed = surrogate->failures();
+  }
+  r.simulations = model.simulations() + (surrogate ? surrogate->simulations() : 0) + final_runs;
+  r.failed_simulations = model.failures() + (surrogate ? surrogate->failures() : 0);
+  if (r.failed_simulations > 0)
+    r.notes.push_back(std::to_string(r.failed_simulations) + " of " +
+                      std::to_string(r.simulations) +
+                      " runs failed before the end of the data and were penalised");
+}
+
+}  // namespace
+
 FitOutcome fit_parameters(const FitProblem& pb) {
   const auto t0 = Clock::now();
   FitOutcome out;
@@ -305,81 +387,18 @@ FitOutcome fit_parameters(const FitProblem& pb) {
   FitObjective model(pb.parameters, pb.targets, pb.model, pb.budget.model_simulations);
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);
-  const Eigen::VectorXd u0 = model.u_of(start);
-
   StageLog log;
   std::optional<FitObjective> surrogate;
-  std::optional<Eigen::VectorXd> best;
-  if (pb.surrogate) {
-    const auto ts = Clock::now();
-    surrogate.emplace(pb.parameters, pb.targets, pb.surrogate, pb.budget.surrogate_simulations);
-    const auto candidates = surrogate_search(*surrogate, u0, pb.budget, log);
-    r.stages.push_back(stage("surrogate search", pb.surrogate_name, *surrogate, seconds_since(ts),
-                             candidates.empty() ? HUGE_VAL : candidates.front().cost));
-    const auto tm = Clock::now();
-    model.set_budget(pb.budget.model_simulations - reserve);
-    best = refine_by_mapping(model, *surrogate, candidates, pb.budget, log);
-    if (!best && !model.spent()) {
-      log.notes.push_back("no surrogate optimum ran on the model: fitted on the model directly");
-      best = refine_directly(model, u0, pb.budget.model_simulations - reserve - model.simulations(),
-                             log);
-    }
-    r.stages.push_back(stage("model refinement (output space mapping)", pb.model_name, model,
-                             seconds_since(tm), best ? model.at(*best)->cost : HUGE_VAL));
-  } else {
-    const auto tm = Clock::now();
-    best = refine_directly(model, u0, pb.budget.model_simulations - reserve, log);
-    r.stages.push_back(stage("model fit", pb.model_name, model, seconds_since(tm),
-                             best ? model.at(*best)->cost : HUGE_VAL));
-  }
+  const auto best = find_optimum(pb, model, surrogate, model.u_of(start), reserve, log, r);
   model.set_budget(pb.budget.model_simulations);
-  const std::size_t model_stage = r.stages.size() - 1;
   r.iterations = log.iterations;
   r.notes = log.notes;
-
-  if (!best) {
-    all_failed(pb, model, surrogate ? &*surrogate : nullptr, r);
-  } else {
-    const std::vector<double> values = model.values(*best);
-    const Evaluation at_best = model.at(*best)->evaluation;
-    auto J = model.jacobian(*best, &r.notes);
-    if (!J && surrogate) {
-      J = surrogate->jacobian(*best, &r.notes);
-      r.notes.push_back("intervals from the surrogate's Jacobian: the model's budget is spent");
-    }
-    const std::vector<ParameterUncertainty> u =
-        J ? uncertainty(*J, at_best, pb.parameters, values)
-          : undetermined(pb.parameters, "no Jacobian: the simulation budget is spent");
-    fill_parameters(pb.parameters, values, u, r);
-    // The fitted model over the whole data: it has to get there.
-    out.final_run = pb.final_model ? pb.final_model(values) : model.at(*best)->run;
-    const Evaluation final_eval = evaluate(pb.targets, out.final_run);
-    fill_series(pb.targets, final_eval.failed ? at_best : final_eval, r);
-    if (!out.final_run.completed || final_eval.failed) {
-      r.status = "failed: the fitted model does not reach the end of the data (" +
-                 (final_eval.failed ? final_eval.failure : out.final_run.failure) + ")";
-    } else {
-      r.status = verdict(r);
-      r.fitted = r.status.rfind("fitted", 0) == 0;
-    }
-    const IcsParameters ics = compute_ics(out.final_run.recording, {});
-    r.fitted_filling = filling_curve(out.final_run.recording, ics,
-                                     std::vector<bool>(out.final_run.recording.rows(), false));
-  }
-  // Every run of each stage, the Jacobian's and the mappings' included.
-  r.stages[model_stage].simulations = model.simulations();
-  r.stages[model_stage].failed = model.failures();
-  if (surrogate) {
-    r.stages.front().simulations = surrogate->simulations();
-    r.stages.front().failed = surrogate->failures();
-  }
-  r.simulations = model.simulations() + (surrogate ? surrogate->simulations() : 0) +
-                  (pb.final_model && best ? 1 : 0);
-  r.failed_simulations = model.failures() + (surrogate ? surrogate->failures() : 0);
-  if (r.failed_simulations > 0)
-    r.notes.push_back(std::to_string(r.failed_simulations) + " of " +
-                      std::to_string(r.simulations) +
-                      " runs failed before the end of the data and were penalised");
+  FitObjective* s = surrogate ? &*surrogate : nullptr;
+  if (best)
+    report_optimum(pb, model, s, *best, out);
+  else
+    all_failed(pb, model, s, r);
+  count_runs(model, s, pb.final_model && best ? 1 : 0, r);
   r.seconds = seconds_since(t0);
   return out;
 }
