@@ -169,6 +169,17 @@ TEST(Calibration, AVoidingTableCalibratesThroughTheCli) {
   EXPECT_TRUE(c["voiding"]["flow_correlation_aligned_onsets"].is_null());
 }
 
+TEST(Calibration, VoidingParametersWithoutAVoidingInTheRecordingAreRefused) {
+  const fs::path dir = scratch_dir("compare-calibration-no-voiding");
+  const auto r = run_command(
+      compare_exe() + " --measured " + compare_data("filling-table.csv").string() + " --mesh " +
+      small_sphere(dir).string() + " --calibrate mu,p_open -o " + (dir / "report").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("voiding parameters need a voiding phase"), std::string::npos)
+      << r.output;
+  EXPECT_FALSE(fs::exists(dir / "report" / "metrics.json"));
+}
+
 // Acceptance of issue 24 on the README's 2,474-triangle CT wall, for the detrusor-voided
 // model (simulate's muscle and urethra laws); enable it when they are the default, with
 // the parameters they name. Targets: filling RMSE <= 1 cmH2O and below the straight line;
