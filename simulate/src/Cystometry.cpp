@@ -8,7 +8,6 @@
 #include "HydrostaticCavity.h"
 #include "PrestressReference.h"
 #include "fluid/NavierStokesCavity.h"
-#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/MaterialRegistry.h"
@@ -85,18 +84,8 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
   CystometryResult result = CystometryProtocol(settings, options).run(*model);
   if (!options.output_dir.empty())
-    write_text_atomically(options.output_dir / "history.csv", history_csv(result.history));
+    io::write_history_csv(result.history, options.output_dir / "history.csv");
   return result;
-}
-
-std::string history_csv(const std::vector<HistoryRow>& history) {
-  std::ostringstream s;
-  s.precision(10);
-  s << "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml\n";
-  for (const HistoryRow& r : history)
-    s << r.time_s << ',' << r.infused_ml << ',' << r.volume_ml << ',' << r.pves_cmh2o << ','
-      << r.pabd_cmh2o << ',' << r.pdet_cmh2o << ',' << r.flow_ml_s << ',' << r.voided_ml << '\n';
-  return s.str();
 }
 
 }  // namespace vesica::simulate

@@ -22,6 +22,7 @@
 #include "vesica/simulate/CystometrySettings.h"
 #include "vesica/simulate/Material.h"
 #include "vesica/simulate/WallLoading.h"
+#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {
@@ -30,16 +31,8 @@ namespace fluid {
 struct FluidMesh;
 }
 
-struct HistoryRow {
-  double time_s = 0.0;
-  double infused_ml = 0.0;
-  double volume_ml = 0.0;
-  double pves_cmh2o = 0.0;
-  double pabd_cmh2o = 0.0;
-  double pdet_cmh2o = 0.0;
-  double flow_ml_s = 0.0;
-  double voided_ml = 0.0;
-};
+// One row of history.csv (clinical units, named by the suffixes); io owns the file.
+using HistoryRow = io::HistoryRow;
 
 struct CystometryResult {
   std::vector<HistoryRow> history;
@@ -64,9 +57,5 @@ void validate(const ProtocolSettings& settings, const RunOptions& options,
 CystometryResult run_cystometry(const WallModel& wall, const MaterialSpec& material,
                                 const ProtocolSettings& settings, const RunOptions& options,
                                 const fluid::FluidMesh* urine = nullptr);
-
-// history.csv text: time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,
-// flow_ml_s,voided_ml
-std::string history_csv(const std::vector<HistoryRow>& history);
 
 }  // namespace vesica::simulate
