@@ -191,10 +191,14 @@ std::string quoted_cell(const std::string& cell) {
   return "\"" + single_line(cell, 40) + "\"";
 }
 
-std::string format_seconds(double s) {
+std::string format_number(double v) {
   std::ostringstream o;
-  o << s << " s";
+  o << v;
   return o.str();
+}
+
+std::string format_seconds(double s) {
+  return format_number(s) + " s";
 }
 
 std::vector<double>* target(Recording& r, const std::string& key) {
@@ -225,16 +229,31 @@ std::vector<BoundColumn> bind_columns(const std::vector<std::string>& header,
                        [&](const BoundColumn& b) { return std::string(b.channel->key) == key; });
   };
   const std::string hint = columns_found(header) + "; map one with --columns KEY=NAME";
-  if (!has("time")) fail(file, "missing column for time (time_s, time_min or time)", hint);
   if (!has("pdet") && !(has("pves") && has("pabd")))
     fail(file, "missing columns for pressure (pdet_cmh2o, or pves_cmh2o and pabd_cmh2o)", hint);
-  if (!has("infused") && !has("volume"))
-    fail(file, "missing column for volume (infused_ml or volume_ml)", hint);
+  const bool filled = has("infused") || has("volume");
+  if (has("time") && !filled && !has("voided") && !has("flow"))
+    fail(file, "missing column for volume (infused_ml, volume_ml, voided_ml or flow_ml_s)", hint);
+  if (!has("time") && !filled && !has("voided"))
+    fail(file,
+         "missing column for time, or for the volume a table without time is read at "
+         "(infused_ml or volume_ml: filling; voided_ml: voiding)",
+         hint);
   return bound;
 }
 
+// The channel that orders the rows: time, else (a table read off at volume steps) the
+// infused, bladder or voided volume.
+const char* row_order_key(const std::vector<BoundColumn>& bound) {
+  for (const char* key : {"time", "infused", "volume", "voided"})
+    for (const auto& b : bound)
+      if (std::string(b.channel->key) == key) return key;
+  return "time";
+}
+
+// One cell into its channel; the channel that orders the rows (order_key) must not go back.
 void read_cell(const BoundColumn& b, const std::string& cell, int line, bool decimal_comma,
-               const std::string& file, Recording& r) {
+               const std::string& file, const std::string& order_key, Recording& r) {
   if (b.channel->quantity == Quantity::Text) {
     r.event.push_back(cell);
     return;
@@ -248,11 +267,15 @@ void read_cell(const BoundColumn& b, const std::string& cell, int line, bool dec
     v = *n * b.factor;
   if (!v) fail(file, place + " is not a number");
   auto* values = target(r, b.channel->key);
-  if (b.channel->quantity == Quantity::Time && !values->empty() && *v < values->back())
-    fail(file,
-         place + " goes back in time (" + format_seconds(*v) + " after " +
-             format_seconds(values->back()) + ")",
-         "rows must be sorted by time");
+  if (b.channel->key == order_key && !values->empty() && *v < values->back()) {
+    if (b.channel->quantity == Quantity::Time)
+      fail(file,
+           place + " goes back in time (" + format_seconds(*v) + " after " +
+               format_seconds(values->back()) + ")",
+           "rows must be sorted by time");
+    fail(file, place + " is below the row before it (" + format_number(values->back()) + ")",
+         "a table without time must be sorted by its volume");
+  }
   values->push_back(*v);
 }
 
@@ -298,6 +321,7 @@ Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& 
   // Rows are converted as they are read: a long recording never exists as text cells.
   std::vector<BoundColumn> bound;
   bool decimal_comma = false;
+  std::string order_key;
   Recording r;
   r.source = file;
   read_csv_rows(
@@ -305,10 +329,12 @@ Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& 
       [&](const CsvHeader& header) {
         bound = bind_columns(header.names, options, file);
         decimal_comma = header.decimal_comma();
+        order_key = row_order_key(bound);
       },
       [&](const std::vector<std::string>& cells, int line) {
         r.line.push_back(line);
-        for (const auto& b : bound) read_cell(b, cells[b.index], line, decimal_comma, file, r);
+        for (const auto& b : bound)
+          read_cell(b, cells[b.index], line, decimal_comma, file, order_key, r);
       });
   if (r.rows() < options.min_rows)
     fail(file, options.min_rows == 2
