@@ -64,7 +64,7 @@ struct Level2Options {
   // Time step while filling and holding (s); 0: the protocol's adaptive step (from half of
   // RunOptions::max_fill_step_ml's time, growing after easy steps): the slow filling's urine
   // is nearly steady, and backward Euler follows it in large steps.
-  double fill_dt_s = 0.0;
+  double fill_dt_s = 1.0;
   double void_dt_s = 0.1;         // time step while voiding
   double urine_viscosity = 1e-3;  // Pa·s
   Level2LinearSolver linear_solver = Level2LinearSolver::Krylov;
