@@ -151,13 +151,13 @@ StepResult HydrostaticCavity::try_step(const StepRequest& step) {
 }
 
 void HydrostaticCavity::continue_from(const std::vector<Eigen::Vector3d>& x,
-                                      const MembraneProblem& wall_state, double pves, double q_out,
-                                      double start_volume_m3, const ProtocolLoads& loads) {
+                                      const MembraneProblem& wall_state, const Takeover& state,
+                                      const ProtocolLoads& loads) {
   x_ = x;
   problem_.copy_committed_state(wall_state);
-  loads_.inside.p0 = pves;
-  q_out_ = q_out;
-  V0_ = start_volume_m3;
+  loads_.inside.p0 = state.pves_pa;
+  q_out_ = state.outflow_m3_s;
+  V0_ = state.start_volume_m3;
   volume_ = enclosed_volume(wall_, x_);
   committed_loads_ = loads;
   set_loads(loads);

@@ -226,7 +226,7 @@ bool NavierStokesCavity::can_hand_over(const StepRequest& step) const {
 void NavierStokesCavity::hand_over(const StepRequest& step, const std::string& failure) {
   const double V = coupling_->fluid_volume();
   auto level1 = std::make_unique<HydrostaticCavity>(wall_, material_, settings_, options_);
-  level1->continue_from(wall_positions(), problem_, pves(), coupling_->outflow(), V_start_,
+  level1->continue_from(wall_positions(), problem_, {pves(), coupling_->outflow(), V_start_},
                         committed_loads_);
   collapse_ = std::move(level1);
   collapse_time_s_ = step.end_time_s - step.dt_s;
