@@ -119,7 +119,9 @@ class CystometryDriver {
     const auto stresses = run_.stresses();
     for (const auto& s : stresses) max_stress_ = std::max(max_stress_, s.sigma1);
     if (series_ && (force ? last_frame_ < t : true))
-      series_->add_step(t, run_.wall(), run_.positions(), stresses);
+      series_->add_step(
+          t, {units::ml_from_m3(run_.volume()), units::cmh2o_from_pa(run_.pves() - run_.pabd())},
+          run_.wall(), run_.positions(), stresses);
     last_frame_ = t;
     next_frame_ = t + (voiding_ ? 1.0 : options_.series_interval_s);
   }

@@ -37,6 +37,15 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
+// A folder in the build tree for what a test leaves to be looked at afterwards
+// (screenshots, printed reports): build/test-artefacts/<name>, emptied at the start.
+inline std::filesystem::path artefact_dir(const std::string& name) {
+  auto dir = bin_dir().parent_path() / "test-artefacts" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 }  // namespace vesica::test
 
 // Use at the top of a test body: the path of a file in ../shared, or skip (locally)

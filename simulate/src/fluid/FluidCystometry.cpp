@@ -406,7 +406,9 @@ class FluidCystometryDriver {
     const auto stresses = problem_.element_outputs(x_wall, last_loads_);
     for (const auto& s : stresses) max_stress_ = std::max(max_stress_, s.sigma1);
     if (wall_series_ && (force ? last_frame_ < t_ : true)) {
-      wall_series_->add_step(t_, wall_, x_wall, stresses);
+      wall_series_->add_step(t_,
+                             {units::ml_from_m3(volume()), units::cmh2o_from_pa(pves() - pabd(t_))},
+                             wall_, x_wall, stresses);
       fluid_series_->add_step(t_, now, coupling_->full_state(), &shear);
     }
     last_frame_ = t_;
