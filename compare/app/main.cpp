@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--mu-kpa", o.simulation.mu_kpa, "Shear modulus to start the calibration from")
       ->capture_default_str();
-  app.add_option("--k-kpa", o.simulation.k_kpa, "Bulk modulus of the wall in the calibration (default: 1000 x mu)")
+  app.add_option("--k-kpa", o.simulation.k_kpa,
+                 "Bulk modulus of the wall in the calibration (default: 1000 x mu)")
       ->capture_default_str();
   app.add_option("--thickness-mm", o.simulation.thickness_mm, "Wall thickness in the calibration")
       ->capture_default_str();
@@ -57,8 +58,7 @@ int main(int argc, char** argv) {
 
   return vesica::run_stage_main(app, argc, argv, common, [&]() {
     if (!render_vtu.empty()) {
-      std::cout << "array: " << vesica::compare::render_wall_stress_png(render_vtu, render_png)
-                << std::endl;
+      vesica::compare::render_wall_stress_png(render_vtu, render_png);
       return 0;
     }
     return vesica::compare::run_compare(o, common, argc, argv);

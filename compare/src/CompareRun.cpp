@@ -8,6 +8,7 @@
 #include "vesica/compare/CalibrationRun.h"
 #include "vesica/compare/ModelComparison.h"
 #include "vesica/compare/ReportPage.h"
+#include "vesica/compare/WallStress.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -34,7 +35,7 @@ std::optional<fs::path> capacity_mesh(const CompareOptions& o, const RecordingAn
   if (!o.mesh.empty()) return fs::path(o.mesh);
   if (!sim) return std::nullopt;
   const fs::path pvd = fs::path(o.simulated).parent_path() / "series.pvd";
-  return vtu_at_time(pvd, sim->recording.time_s[sim->ics.capacity_row]);
+  return frame_at_time(pvd, sim->recording.time_s[sim->ics.capacity_row]);
 }
 
 nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalysis* s,
@@ -99,7 +100,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   if (const auto mesh = capacity_mesh(o, simulated.get())) {
     PhaseTimer t(record, "render");
     in.wall_stress = make_wall_stress_picture(*mesh, fs::read_symlink("/proc/self/exe"));
-    if (in.wall_stress->png_base64.empty()) log()->warn("{}", in.wall_stress->message);
+    if (in.wall_stress->png.empty()) log()->warn("{}", in.wall_stress->message);
   }
 
   nlohmann::json metrics;
@@ -108,14 +109,21 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   metrics["simulated"] = simulated ? to_json(*simulated) : nlohmann::json();
   metrics["comparison"] = comparison;
   metrics["calibration"] = calibration ? to_json(*calibration) : nlohmann::json();
-  metrics["wall_stress_picture"] =
-      in.wall_stress ? nlohmann::json{{"embedded", !in.wall_stress->png_base64.empty()},
-                                      {"message", in.wall_stress->message}}
-                     : nlohmann::json();
+  metrics["wall_stress_picture"] = in.wall_stress
+                                       ? nlohmann::json{{"embedded", !in.wall_stress->png.empty()},
+                                                        {"message", in.wall_stress->message},
+                                                        {"facts", in.wall_stress->facts}}
+                                       : nlohmann::json();
   {
     PhaseTimer t(record, "write");
     const fs::path out(o.output);
     write_text_atomically(out / "metrics.json", metrics.dump(2) + "\n");
+    if (in.wall_stress && !in.wall_stress->png.empty()) {
+      write_text_atomically(out / "wall-stress.png", in.wall_stress->png);
+      write_text_atomically(out / "wall-stress.json", in.wall_stress->facts.dump(2) + "\n");
+      record.add_output(out / "wall-stress.png");
+      record.add_output(out / "wall-stress.json");
+    }
     write_text_atomically(out / "index.html", report_html(in));
     record.add_output(out / "index.html");
     record.add_output(out / "metrics.json");

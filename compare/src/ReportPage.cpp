@@ -218,10 +218,10 @@ std::string calibration_section(const CalibrationResult* c) {
 std::string wall_stress_section(const ReportInputs& in) {
   if (!in.wall_stress) return "<p>No simulation mesh was given (--mesh), so no picture.</p>\n";
   const auto& w = *in.wall_stress;
-  if (w.png_base64.empty()) return "<p class=\"missing\">" + xml_escape(w.message) + "</p>\n";
+  if (w.png.empty()) return "<p class=\"missing\">" + xml_escape(w.message) + "</p>\n";
   return "<figure><img id=\"wall-stress\" alt=\"wall stress at capacity\" "
          "src=\"data:image/png;base64," +
-         w.png_base64 + "\"/><figcaption>" + xml_escape(w.message) + "</figcaption></figure>\n";
+         base64(w.png) + "\"/><figcaption>" + xml_escape(w.message) + "</figcaption></figure>\n";
 }
 
 std::string comparison_section(const nlohmann::json& c) {
