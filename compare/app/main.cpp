@@ -31,6 +31,11 @@ int main(int argc, char** argv) {
   app.add_option("--mesh", o.mesh,
                  "Simulation mesh .vtu: the wall-stress picture (a .vtu of the series at "
                  "capacity) and, with --calibrate, the geometry to simulate");
+  app.add_option("--sex", o.sex,
+                 "Patient's sex, female or male (default: from the measured recording's header); "
+                 "selects the pressure-flow criteria")
+      ->check(CLI::IsMember({"female", "male"}));
+  app.add_flag("--no-pdf", o.no_pdf, "Do not print report.pdf with headless chromium");
   app.add_option("--calibrate", o.calibrate,
                  "Fit these parameters to the measured Pdet(V): mu[,beta,tau,k1,k2,r1,r2,p_open]");
   app.add_option("--fit-volume-ml", o.fit_volume_ml,

@@ -1,5 +1,6 @@
 #include "vesica/compare/CompareRun.h"
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -7,6 +8,8 @@
 
 #include "vesica/compare/CalibrationRun.h"
 #include "vesica/compare/ModelComparison.h"
+#include "vesica/compare/PdfPrint.h"
+#include "vesica/compare/RecordingHeader.h"
 #include "vesica/compare/ReportPage.h"
 #include "vesica/compare/WallStress.h"
 #include "vesica/core/AtomicOutput.h"
@@ -39,13 +42,19 @@ std::optional<fs::path> capacity_mesh(const CompareOptions& o, const RecordingAn
 }
 
 nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalysis* s,
-                               const nlohmann::json& comparison, const CalibrationResult* cal) {
+                               const nlohmann::json& comparison, const CalibrationResult* cal,
+                               Sex sex) {
   nlohmann::json j;
   const RecordingAnalysis* a = m ? m : s;
   const auto p = to_json(a->ics);
   for (const char* k : {"capacity_ml", "compliance_ml_per_cmh2o", "qmax_ml_s", "pdet_qmax_cmh2o",
-                        "voided_ml", "pvr_ml", "booi", "booi_class", "bci", "bci_class"})
+                        "voided_ml", "pvr_ml"})
     j[k] = p[k];
+  j["sex"] = sex_name(sex);
+  for (const Criterion& c : voiding_criteria(a->ics, sex)) {
+    j[c.key] = c.value ? nlohmann::json(*c.value) : nlohmann::json();
+    j[c.key + "_class"] = c.verdict;
+  }
   j["artefact_rows"] = a->flags.size();
   if (!comparison.is_null()) j["pdet_rmse_cmh2o"] = comparison["filling_pdet"]["rmse_cmh2o"];
   if (cal) {
@@ -53,6 +62,59 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
     j["fit_rmse_cmh2o"] = cal->rmse_cmh2o;
   }
   return j;
+}
+
+// The patient's sex: --sex when given (it wins over the file, with a warning when they
+// differ), else what the recording's header says.
+PatientFacts patient_facts(const CompareOptions& o) {
+  PatientFacts p;
+  if (!o.measured.empty()) {
+    const RecordingHeader h = read_recording_header(o.measured);
+    p.sex = h.sex;
+    p.sex_source = h.sex == Sex::unknown ? "" : "recording header";
+    p.age_years = h.age_years;
+    p.stated_fill_rate_ml_min = h.stated_fill_rate_ml_min;
+  }
+  if (!o.sex.empty()) {
+    const Sex given = sex_from_word(o.sex);
+    if (given == Sex::unknown) usage_error("--sex must be female or male, not '" + o.sex + "'");
+    if (p.sex != Sex::unknown && p.sex != given)
+      log()->warn("--sex {} overrides the recording header ({})", sex_name(given), sex_name(p.sex));
+    p.sex = given;
+    p.sex_source = "--sex";
+  }
+  return p;
+}
+
+// A simulation has no catheters: nothing in it is an artefact (its straining phase has a
+// negative Pdet by design), so no row is flagged.
+ArtefactOptions no_artefacts() {
+  ArtefactOptions none;
+  none.spike_cmh2o = none.negative_pdet_cmh2o = none.mismatch_cmh2o = HUGE_VAL;
+  return none;
+}
+
+void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& metrics,
+                  StageRecord& record) {
+  const fs::path out(o.output);
+  if (in.wall_stress && !in.wall_stress->png.empty()) {
+    write_text_atomically(out / "wall-stress.png", in.wall_stress->png);
+    write_text_atomically(out / "wall-stress.json", in.wall_stress->facts.dump(2) + "\n");
+    record.add_output(out / "wall-stress.png");
+    record.add_output(out / "wall-stress.json");
+  }
+  write_text_atomically(out / "index.html", report_html(in));
+  record.add_output(out / "index.html");
+  if (o.no_pdf) {
+    metrics["pdf"] = {{"written", false}, {"why", "--no-pdf"}};
+  } else {
+    const std::string why = print_pdf(out / "index.html", out / "report.pdf");
+    if (!why.empty()) log()->warn("no report.pdf: {}", why);
+    metrics["pdf"] = {{"written", why.empty()}, {"why", why}};
+    if (why.empty()) record.add_output(out / "report.pdf");
+  }
+  write_text_atomically(out / "metrics.json", metrics.dump(2) + "\n");
+  record.add_output(out / "metrics.json");
 }
 
 }  // namespace
@@ -64,17 +126,23 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   measured_reader.columns = io::parse_column_map(o.columns);
   measured_reader.pressure_unit = o.pressure_unit;
 
+  ReportInputs in;
+  in.patient = patient_facts(o);
+  in.generated_utc = utc_now_iso8601();
   std::unique_ptr<RecordingAnalysis> measured, simulated;
   {
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
       measured = std::make_unique<RecordingAnalysis>(
           analyse(io::read_recording(o.measured, measured_reader), o.artefacts));
+      keep_classes_of_sex(measured->ics, in.patient.sex);
       record.add_input(o.measured);
     }
     if (!o.simulated.empty()) {
       simulated = std::make_unique<RecordingAnalysis>(
-          analyse(io::read_recording(o.simulated), o.artefacts));
+          analyse(io::read_recording(o.simulated), no_artefacts()));
+      keep_classes_of_sex(simulated->ics, in.patient.sex);
+      in.settings = read_simulation_settings(o.simulated);
       record.add_input(o.simulated);
     }
   }
@@ -92,7 +160,6 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     calibration = calibrate_from_options(o, *measured, copt);
   }
 
-  ReportInputs in;
   in.measured = measured.get();
   in.simulated = simulated.get();
   in.calibration = calibration ? &*calibration : nullptr;
@@ -104,9 +171,24 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   }
 
   nlohmann::json metrics;
-  metrics["units"] = {{"volume", "ml"}, {"pressure", "cmH2O"}, {"flow", "ml/s"}, {"time", "s"}};
+  metrics["units"] = {
+      {"volume", "ml"}, {"pressure", "cmH2O"}, {"flow", "ml/s"}, {"time", "s"}, {"stress", "kPa"}};
+  metrics["patient"] = {{"sex", sex_name(in.patient.sex)},
+                        {"sex_source", in.patient.sex_source},
+                        {"age_years", in.patient.age_years ? nlohmann::json(*in.patient.age_years)
+                                                           : nlohmann::json()}};
   metrics["measured"] = measured ? to_json(*measured) : nlohmann::json();
   metrics["simulated"] = simulated ? to_json(*simulated) : nlohmann::json();
+  metrics["criteria"] = {{"caveat", criteria_caveat(in.patient.sex)}};
+  for (const auto& [name, a] :
+       {std::pair{"measured", measured.get()}, std::pair{"simulated", simulated.get()}})
+    if (a)
+      for (const Criterion& c : voiding_criteria(a->ics, in.patient.sex))
+        metrics["criteria"][name][c.key] = {
+            {"value", c.value ? nlohmann::json(*c.value) : nlohmann::json()},
+            {"class", c.verdict},
+            {"reference", c.reference}};
+  metrics["simulation_settings"] = in.settings ? to_json(*in.settings) : nlohmann::json();
   metrics["comparison"] = comparison;
   metrics["calibration"] = calibration ? to_json(*calibration) : nlohmann::json();
   metrics["wall_stress_picture"] = in.wall_stress
@@ -116,28 +198,20 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
                                        : nlohmann::json();
   {
     PhaseTimer t(record, "write");
-    const fs::path out(o.output);
-    write_text_atomically(out / "metrics.json", metrics.dump(2) + "\n");
-    if (in.wall_stress && !in.wall_stress->png.empty()) {
-      write_text_atomically(out / "wall-stress.png", in.wall_stress->png);
-      write_text_atomically(out / "wall-stress.json", in.wall_stress->facts.dump(2) + "\n");
-      record.add_output(out / "wall-stress.png");
-      record.add_output(out / "wall-stress.json");
-    }
-    write_text_atomically(out / "index.html", report_html(in));
-    record.add_output(out / "index.html");
-    record.add_output(out / "metrics.json");
+    write_report(o, in, metrics, record);
   }
   record.parameters() = {{"measured", o.measured},
                          {"simulated", o.simulated},
                          {"columns", o.columns},
                          {"pressure_unit", o.pressure_unit},
                          {"mesh", o.mesh},
+                         {"sex", o.sex},
                          {"calibrate", o.calibrate},
                          {"fit_volume_ml", o.fit_volume_ml},
-                         {"spike_cmh2o", o.artefacts.spike_cmh2o}};
+                         {"spike_cmh2o", o.artefacts.spike_cmh2o},
+                         {"no_pdf", o.no_pdf}};
   record.summary() = summary_numbers(measured.get(), simulated.get(), comparison,
-                                     calibration ? &*calibration : nullptr);
+                                     calibration ? &*calibration : nullptr, in.patient.sex);
   const auto summary = record.write(common.report, default_manifest_path(common, o.output));
   if (common.json) std::cout << summary.dump(2) << std::endl;
   return 0;
