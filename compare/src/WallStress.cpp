@@ -59,11 +59,11 @@ std::optional<Eigen::Vector3d> outlet_centroid(const WallStressField& f) {
 }
 
 // "neck", "body" or "dome" by the distance from the outlet as a fraction of the farthest
-// wall point's, and the distance itself.
+// wall point's, and the distance itself (no comma: it is a cell of study.csv).
 std::string describe_where(const WallStressField& f, const WallStressSummary& s) {
   char buf[96];
   if (!s.outlet_mm) {
-    std::snprintf(buf, sizeof buf, "at (%.0f, %.0f, %.0f) mm", s.max_at_mm.x(), s.max_at_mm.y(),
+    std::snprintf(buf, sizeof buf, "at x %.0f y %.0f z %.0f mm", s.max_at_mm.x(), s.max_at_mm.y(),
                   s.max_at_mm.z());
     return buf;
   }
@@ -72,7 +72,7 @@ std::string describe_where(const WallStressField& f, const WallStressSummary& s)
     farthest = std::max(farthest, (f.points_mm.row(i).transpose() - *s.outlet_mm).norm());
   const double d = *s.max_from_outlet_mm, fraction = farthest > 0 ? d / farthest : 0.0;
   const char* part = fraction < 1.0 / 3.0 ? "neck" : fraction < 2.0 / 3.0 ? "body" : "dome";
-  std::snprintf(buf, sizeof buf, "%s, %.0f mm from the outlet", part, d);
+  std::snprintf(buf, sizeof buf, "%s (%.0f mm from the outlet)", part, d);
   return buf;
 }
 

@@ -65,4 +65,11 @@ struct AnteriorProjection {
 AnteriorProjection project_anterior(const WallStressField& field);
 nlohmann::json to_json(const AnteriorProjection& p);
 
+// For a simulation folder (history.csv, series.pvd): the series frame nearest the first row
+// of largest volume (capacity), as {"frame", "summary": WallStressSummary, "projection":
+// AnteriorProjection}; null when the folder has no series. `vesica-compare
+// --wall-stress-at-capacity DIR` prints it for the runner's study page, which does not
+// load VTK itself.
+nlohmann::json wall_stress_at_capacity(const std::filesystem::path& simulation);
+
 }  // namespace vesica::compare

@@ -3,6 +3,7 @@
 // named external inputs and an optional study. Positions are kept for error messages.
 // Loading never throws: every problem goes to a Diagnostics list.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,9 +64,18 @@ struct Variant {
   SourcePos pos;
 };
 
+// `study: limits:` one bound on a read-out (StudyMetrics.h): `pdet_at_500ml_cmh2o: {max: 40}`.
+struct StudyLimit {
+  std::string metric;
+  std::optional<double> min, max;
+  SourcePos pos;
+};
+
 struct StudySpec {
   std::vector<MatrixAxis> matrix;
   std::vector<Variant> variants;
+  std::string question;            // `study: question:` the design question, in words
+  std::vector<StudyLimit> limits;  // what a variant must meet to answer it "pass"
   SourcePos pos;
   bool present() const { return !matrix.empty() || !variants.empty(); }
 };

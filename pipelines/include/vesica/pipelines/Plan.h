@@ -31,6 +31,8 @@ struct Plan {
   std::filesystem::path file;
   std::filesystem::path workdir;  // absolute
   std::vector<PlannedStage> stages;
+  std::string question;            // the study's design question (study.csv/.html)
+  std::vector<StudyLimit> limits;  // and what answers it "pass"
 
   // Index of the stage with this id, or -1.
   long index_of(const std::string& id) const;
