@@ -99,7 +99,7 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
   const fs::path out(o.output);
   if (in.wall_stress && !in.wall_stress->png.empty()) {
     write_text_atomically(out / "wall-stress.png", in.wall_stress->png);
-    write_text_atomically(out / "wall-stress.json", in.wall_stress->facts.dump(2) + "\n");
+    write_text_atomically(out / "wall-stress.json", picture_facts(*in.wall_stress).dump(2) + "\n");
     record.add_output(out / "wall-stress.png");
     record.add_output(out / "wall-stress.json");
   }
@@ -163,7 +163,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   in.measured = measured.get();
   in.simulated = simulated.get();
   in.calibration = calibration ? &*calibration : nullptr;
-  in.comparison = comparison;
+  in.comparison = comparison.is_null() ? nullptr : &comparison;
   if (const auto mesh = capacity_mesh(o, simulated.get())) {
     PhaseTimer t(record, "render");
     in.wall_stress = make_wall_stress_picture(*mesh, fs::read_symlink("/proc/self/exe"));
@@ -191,11 +191,13 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   metrics["simulation_settings"] = in.settings ? to_json(*in.settings) : nlohmann::json();
   metrics["comparison"] = comparison;
   metrics["calibration"] = calibration ? to_json(*calibration) : nlohmann::json();
-  metrics["wall_stress_picture"] = in.wall_stress
-                                       ? nlohmann::json{{"embedded", !in.wall_stress->png.empty()},
-                                                        {"message", in.wall_stress->message},
-                                                        {"facts", in.wall_stress->facts}}
-                                       : nlohmann::json();
+  metrics["wall_stress_picture"] =
+      in.wall_stress
+          ? nlohmann::json{{"embedded", !in.wall_stress->png.empty()},
+                           {"message", in.wall_stress->message},
+                           {"facts", in.wall_stress->png.empty() ? nlohmann::json()
+                                                                 : picture_facts(*in.wall_stress)}}
+          : nlohmann::json();
   {
     PhaseTimer t(record, "write");
     write_report(o, in, metrics, record);

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include "ShellQuote.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 
@@ -12,12 +13,6 @@ namespace vesica::compare {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 bool starts_like_pdf(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -41,8 +36,9 @@ std::string print_pdf(const fs::path& html, const fs::path& pdf) {
             "timeout 120 chromium --headless --no-sandbox --disable-gpu "
             "--disable-background-networking --disable-component-update --no-first-run "
             "--disable-dev-shm-usage --no-pdf-header-footer --user-data-dir=" +
-            quote(profile.string()) + " --print-to-pdf=" + quote(tmp.string()) + " " +
-            quote("file://" + fs::absolute(html).string()) + " >/dev/null 2>&1";
+            detail::shell_quote(profile.string()) +
+            " --print-to-pdf=" + detail::shell_quote(tmp.string()) + " " +
+            detail::shell_quote("file://" + fs::absolute(html).string()) + " >/dev/null 2>&1";
         const int status = std::system(cmd.c_str());
         if (status != 0 || !fs::exists(tmp) || !starts_like_pdf(tmp))
           fail(pdf.string(),

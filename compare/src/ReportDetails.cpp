@@ -8,7 +8,8 @@
 namespace vesica::compare::report {
 namespace {
 
-std::string stress_table(const nlohmann::json& facts) {
+std::string stress_table(const WallStressPicture& picture) {
+  const nlohmann::json facts = picture_facts(picture);
   const nlohmann::json& s = facts["summary"];
   std::ostringstream o;
   o << "<table class=\"facts\" id=\"wall-stress-numbers\">\n"
@@ -24,8 +25,9 @@ std::string stress_table(const nlohmann::json& facts) {
   return o.str();
 }
 
-std::string comparison_table(const nlohmann::json& c) {
-  if (c.is_null()) return "<p>Only one recording was given; nothing to compare.</p>\n";
+std::string comparison_table(const nlohmann::json* comparison) {
+  if (!comparison) return "<p>Only one recording was given; nothing to compare.</p>\n";
+  const nlohmann::json& c = *comparison;
   std::ostringstream o;
   o << "<table class=\"comparison\"><tr><th>Curve</th><th>Range</th><th>RMSE</th>"
     << "<th>Max error</th></tr>\n";
@@ -86,7 +88,7 @@ std::string wall_stress_section(const ReportInputs& in) {
          ": each triangle coloured by its maximum principal Cauchy stress &sigma;1 (viridis, "
          "unshaded); the outlet cap (held fixed in the model) grey and left out of the "
          "numbers.</figcaption></figure>\n" +
-         stress_table(w.facts) + "</div>\n";
+         stress_table(w) + "</div>\n";
 }
 
 std::string details_section(const ReportInputs& in) {

@@ -119,10 +119,10 @@ std::string model_card(const ReportInputs& in) {
 std::string number(double v, int significant) {
   if (!std::isfinite(v)) return "&ndash;";
   char buf[32];
-  // whole numbers up to the precision print in full (349, not 3.49e+02)
-  if (std::abs(v) >= 1 && std::abs(v) < 1e6 && std::abs(v - std::round(v)) < 1e-9)
-    std::snprintf(buf, sizeof buf, "%.0f", v);
-  else if (std::abs(v) >= std::pow(10.0, significant))
+  // whole numbers, and numbers beyond the precision, print in full (349 and 1234, not
+  // 3.49e+02 and 1.23e+03)
+  const bool whole = std::abs(v) >= 1 && std::abs(v) < 1e6 && std::abs(v - std::round(v)) < 1e-9;
+  if (whole || std::abs(v) >= std::pow(10.0, significant))
     std::snprintf(buf, sizeof buf, "%.0f", v);
   else
     std::snprintf(buf, sizeof buf, "%.*g", significant, std::abs(v) < 1e-12 ? 0.0 : v);

@@ -303,8 +303,9 @@ std::string SvgPlot::legend(double x0, double y0, bool below) const {
   const std::size_t columns = below && 26 + 7.0 * longest < (width_ - x0) / 2 ? 2 : 1;
   std::size_t k = 0;
   auto at = [&](double& lx, double& ly) {
-    lx = x0 + static_cast<double>(k % columns) * (width_ - x0) / 2;
-    ly = y0 + 18.0 * static_cast<double>(k / columns);
+    const std::size_t row = k / columns, column = k % columns;
+    lx = x0 + static_cast<double>(column) * (width_ - x0) / 2;
+    ly = y0 + 18.0 * static_cast<double>(row);
     ++k;
   };
   double lx = 0, ly = 0;

@@ -192,9 +192,11 @@ AnteriorProjection project_anterior(const WallStressField& f) {
             [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
   for (std::size_t t : order) {
     std::array<double, 6> tri{};
-    for (int k = 0; k < 3; ++k) {
-      tri[2 * k] = f.points_mm(f.triangles(static_cast<Eigen::Index>(t), k), 0);
-      tri[2 * k + 1] = f.points_mm(f.triangles(static_cast<Eigen::Index>(t), k), 2);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const Eigen::Index node =
+          f.triangles(static_cast<Eigen::Index>(t), static_cast<Eigen::Index>(k));
+      tri[2 * k] = f.points_mm(node, 0);
+      tri[2 * k + 1] = f.points_mm(node, 2);
     }
     p.triangles_mm.push_back(tri);
     p.sigma1_kpa.push_back(f.sigma1_kpa[t]);

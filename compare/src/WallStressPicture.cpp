@@ -29,6 +29,7 @@
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "ShellQuote.h"
 #include "vesica/compare/Viridis.h"
 #include "vesica/compare/WallStress.h"
 #include "vesica/core/AtomicOutput.h"
@@ -45,26 +46,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-// The colour bar's range: the wall's smallest to largest σ1; a rounding residue of zero
-// (an unloaded triangle at 1e-16 kPa) reads 0, and a uniform field gets a unit span.
-std::array<double, 2> colour_range(const WallStressSummary& s) {
-  double lo = s.min_kpa, hi = s.max_kpa;
-  if (std::abs(lo) < 1e-6 * std::abs(hi)) lo = 0.0;
-  if (!(hi - lo > 1e-9 * std::max(1.0, std::abs(hi)))) lo = hi - 1.0;
-  return {lo, hi};
 }
 
 vtkNew<vtkPolyData> wall_polydata(const WallStressField& f) {
@@ -190,8 +176,22 @@ std::string state_line(const WallStressSummary& s) {
 
 }  // namespace
 
-std::filesystem::path sidecar_of(const std::filesystem::path& png) {
-  return fs::path(png).replace_extension(".json");
+std::array<double, 2> colour_bar_range(const WallStressSummary& s) {
+  double lo = s.min_kpa, hi = s.max_kpa;
+  if (std::abs(lo) < 1e-6 * std::abs(hi)) lo = 0.0;
+  if (!(hi - lo > 1e-9 * std::max(1.0, std::abs(hi)))) lo = hi - 1.0;
+  return {lo, hi};
+}
+
+nlohmann::json picture_facts(const WallStressPicture& p) {
+  return {{"frame", p.frame},
+          {"quantity", "maximum principal Cauchy stress"},
+          {"unit", "kPa"},
+          {"colour_map", "viridis"},
+          {"colour_bar_kpa", {p.colour_bar_kpa[0], p.colour_bar_kpa[1]}},
+          {"view", "anterior: camera on -y (LPS), head up, patient right on the left"},
+          {"outlet", "grey, left out of the numbers"},
+          {"summary", to_json(p.summary)}};
 }
 
 std::string base64(const std::string& bytes) {
@@ -216,12 +216,11 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
-nlohmann::json render_wall_stress_png(const fs::path& vtu, const fs::path& png, int width,
-                                      int height) {
+void render_wall_stress_png(const fs::path& vtu, const fs::path& png, int width, int height) {
   const WallStressField field = read_wall_stress_field(vtu);
   const WallStressSummary summary = summarize(field);
   if (summary.triangles == 0) fail(vtu.string(), "every triangle is outlet: no wall stress");
-  const auto range = colour_range(summary);
+  const auto range = colour_bar_range(summary);
   vtkNew<vtkPolyData> poly = wall_polydata(field);
   vtkNew<vtkLookupTable> lut = viridis_table(range);
 
@@ -277,8 +276,6 @@ nlohmann::json render_wall_stress_png(const fs::path& vtu, const fs::path& png, 
     writer->AddText("vesica:colour_bar_kpa", bar_text);
     writer->Write();
   });
-  write_text_atomically(sidecar_of(png), facts.dump(2) + "\n");
-  return facts;
 }
 
 WallStressPicture make_wall_stress_picture(const fs::path& vtu, const fs::path& executable) {
@@ -287,12 +284,20 @@ WallStressPicture make_wall_stress_picture(const fs::path& vtu, const fs::path& 
     pic.message = "no wall-stress picture: frame " + vtu.string() + " not found";
     return pic;
   }
-  const std::string tag = std::to_string(::getpid());
-  const fs::path dir = fs::temp_directory_path() / ("vesica-compare-" + tag);
+  pic.frame = vtu.filename().string();
+  try {
+    pic.summary = summarize(read_wall_stress_field(vtu));
+  } catch (const Error& e) {
+    pic.message = std::string("no wall-stress picture: ") + e.what();
+    return pic;
+  }
+  pic.colour_bar_kpa = colour_bar_range(pic.summary);
+  const fs::path dir = fs::temp_directory_path() / ("vesica-compare-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const fs::path png = dir / "wall-stress.png", log = dir / "render.log";
-  std::string cmd = quote(executable.string()) + " --render-wall-stress " + quote(vtu.string()) +
-                    " --render-png " + quote(png.string());
+  std::string cmd = detail::shell_quote(executable.string()) + " --render-wall-stress " +
+                    detail::shell_quote(vtu.string()) + " --render-png " +
+                    detail::shell_quote(png.string());
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display) {
     if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
@@ -302,20 +307,18 @@ WallStressPicture make_wall_stress_picture(const fs::path& vtu, const fs::path& 
     }
     cmd = "xvfb-run -a " + cmd;
   }
-  const int status = std::system((cmd + " >" + quote(log.string()) + " 2>&1").c_str());
+  const int status =
+      std::system((cmd + " >" + detail::shell_quote(log.string()) + " 2>&1").c_str());
   const std::string bytes = fs::exists(png) ? read_bytes(png) : std::string();
-  const std::string sidecar = fs::exists(sidecar_of(png)) ? read_bytes(sidecar_of(png)) : "";
   std::string out = read_bytes(log);
   fs::remove_all(dir);
-  pic.facts = nlohmann::json::parse(sidecar, nullptr, false);
-  if (status != 0 || bytes.size() < 8 || pic.facts.is_discarded()) {
+  if (status != 0 || bytes.size() < 8) {
     if (out.size() > 300) out = out.substr(out.size() - 300);
-    pic.facts = nullptr;
     pic.message = "no wall-stress picture: off-screen rendering failed (" + out + ")";
     return pic;
   }
   pic.png = bytes;
-  pic.message = "wall at capacity from " + vtu.filename().string();
+  pic.message = "wall at capacity from " + pic.frame;
   return pic;
 }
 

@@ -23,7 +23,7 @@ nlohmann::json capacity_stress(const std::filesystem::path& compare_executable,
     return nullptr;
   }
   // The JSON is the last line; warnings, if any, come before it.
-  const nlohmann::json j =
+  nlohmann::json j =
       lines.empty() ? nlohmann::json() : nlohmann::json::parse(lines.back(), nullptr, false);
   if (status != 0 || j.is_discarded() || !j.is_object()) {
     why = compare_executable.filename().string() + " --wall-stress-at-capacity failed" +

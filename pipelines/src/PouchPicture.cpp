@@ -20,10 +20,10 @@ struct Box {
 Box bounds(const nlohmann::json& triangles) {
   Box b;
   for (const auto& t : triangles)
-    for (int k = 0; k < 3; ++k) {
-      b.x0 = std::min(b.x0, t[2 * k].get<double>()), b.x1 = std::max(b.x1, t[2 * k].get<double>());
-      b.z0 = std::min(b.z0, t[2 * k + 1].get<double>());
-      b.z1 = std::max(b.z1, t[2 * k + 1].get<double>());
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double x = t[2 * k].get<double>(), z = t[2 * k + 1].get<double>();
+      b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x);
+      b.z0 = std::min(b.z0, z), b.z1 = std::max(b.z1, z);
     }
   return b;
 }

@@ -31,7 +31,7 @@ struct ReportInputs {
   const RecordingAnalysis* simulated = nullptr;
   const CalibrationResult* calibration = nullptr;
   std::optional<WallStressPicture> wall_stress;  // none when no frame was available
-  nlohmann::json comparison;                     // compare_models(), or null
+  const nlohmann::json* comparison = nullptr;    // compare_models(), or none
   PatientFacts patient;
   std::optional<SimulationSettings> settings;  // of the simulated recording
   std::string generated_utc;                   // when the report was made
