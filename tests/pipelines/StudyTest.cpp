@@ -179,7 +179,7 @@ TEST(Study, LimitsNameAReadOutAndNumbers) {
                       "'pdet_at_500ml_cmh2o'?)"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("s.yaml:8:23: study.limits.qmax_ml_s.min must be a number"),
+  EXPECT_NE(text.find("s.yaml:8:22: study.limits.qmax_ml_s.min must be a number"),
             std::string::npos)
       << text;
 }
