@@ -9,11 +9,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica;
@@ -62,7 +62,7 @@ nlohmann::json cystometry(int n, double target_s) {
     if (base) wall.region[e] = 2;  // outlet cap
   }
   fix_regions(wall, Eigen::Vector3d(0, 0, -1), 0.0);
-  CystometryProtocol p;
+  ProtocolSettings p;
   p.straining_kpa = 4.0;  // voiding by abdominal straining, as in the demo
   RunOptions o;
   const auto t0 = std::chrono::steady_clock::now();

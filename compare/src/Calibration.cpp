@@ -40,7 +40,7 @@ Recording recording_from_history(const std::vector<simulate::HistoryRow>& h) {
 namespace {
 
 void apply(const ParameterSpec& s, double v, simulate::MaterialSpec& m,
-           simulate::CystometryProtocol& p) {
+           simulate::ProtocolSettings& p) {
   if (s.name == "mu") m.params["mu"] = v * 1e3;
   if (s.name == "k") {
     m.params.erase("K_per_mu");  // a fitted K no longer follows mu
@@ -94,7 +94,7 @@ class Residuals {
     const auto hit = cache_.find(p);
     if (hit != cache_.end() && !filling) return hit->second;
     simulate::MaterialSpec material = pb_.material;
-    simulate::CystometryProtocol protocol = pb_.protocol;
+    simulate::ProtocolSettings protocol = pb_.protocol;
     for (std::size_t j = 0; j < p.size(); ++j) apply(pb_.parameters[j], p[j], material, protocol);
     ++simulations_;
     // Every iteration a fresh tangent: the fit's finite-difference Jacobian needs curves

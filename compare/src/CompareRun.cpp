@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "vesica/compare/CalibrationRun.h"
+#include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/ModelComparison.h"
 #include "vesica/compare/PdfPrint.h"
 #include "vesica/compare/RecordingHeader.h"
@@ -27,8 +28,6 @@ void validate(const CompareOptions& o) {
   if (o.output.empty()) usage_error("--output is required", "-o REPORTDIR");
   if (o.measured.empty() && o.simulated.empty())
     usage_error("nothing to compare", "give --measured and/or --simulated");
-  if (!o.fit_volume_ml.empty() && !(o.fit_volume_ml[1] > o.fit_volume_ml[0]))
-    usage_error("--fit-volume-ml: LO must be below HI");
   if (!o.calibrate.empty() && (o.measured.empty() || o.mesh.empty()))
     usage_error("--calibrate needs --measured (the curve to fit) and --mesh (the geometry)");
 }
@@ -202,16 +201,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "write");
     write_report(o, in, metrics, record);
   }
-  record.parameters() = {{"measured", o.measured},
-                         {"simulated", o.simulated},
-                         {"columns", o.columns},
-                         {"pressure_unit", o.pressure_unit},
-                         {"mesh", o.mesh},
-                         {"sex", o.sex},
-                         {"calibrate", o.calibrate},
-                         {"fit_volume_ml", o.fit_volume_ml},
-                         {"spike_cmh2o", o.artefacts.spike_cmh2o},
-                         {"no_pdf", o.no_pdf}};
+  CompareOptions bound = o;  // the table reads every parameter's value back for the manifest
+  record.parameters() = parameter_table(bound).values();
   record.summary() = summary_numbers(measured.get(), simulated.get(), comparison,
                                      calibration ? &*calibration : nullptr, in.patient.sex);
   const auto summary = record.write(common.report, default_manifest_path(common, o.output));

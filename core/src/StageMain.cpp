@@ -6,9 +6,36 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
+#include "vesica/core/Suggest.h"
 #include "vesica/core/Version.h"
 
 namespace vesica {
+namespace {
+
+// Long option names of the app ("mu-kpa"), hidden ones left out.
+std::vector<std::string> long_option_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options())
+    if (!option->get_group().empty())
+      for (const auto& name : option->get_lnames()) names.push_back(name);
+  return names;
+}
+
+// "unknown option --mu (did you mean --mu-kpa?)" for every unexpected option; CLI11's
+// own text when the extras are stray values only.
+std::string unexpected_arguments(const CLI::App& app, const CLI::ExtrasError& error) {
+  std::string message;
+  for (const std::string& extra : app.remaining()) {
+    if (extra.size() < 3 || extra.compare(0, 2, "--") != 0) continue;
+    const std::string name = extra.substr(2, extra.find('=') - 2);
+    const std::string match = closest_match(name, long_option_names(app));
+    message += (message.empty() ? "" : "; ") + std::string("unknown option --") + name;
+    if (!match.empty()) message += " (did you mean --" + match + "?)";
+  }
+  return message.empty() ? error.what() : message;
+}
+
+}  // namespace
 
 void add_common_options(CLI::App& app, CommonOptions& options) {
   app.add_option("--report", options.report, "Write the stage summary (JSON) here");
@@ -30,6 +57,12 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
+  } catch (const CLI::Success&) {  // --parameters-json has printed the table
+    return 0;
+  } catch (const CLI::ExtrasError& e) {
+    std::fprintf(stderr, "%s: usage error: %s (see %s --help)\n", tool.c_str(),
+                 unexpected_arguments(app, e).c_str(), tool.c_str());
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "%s: usage error: %s (see %s --help)\n", tool.c_str(), e.what(),
                  tool.c_str());

@@ -10,13 +10,14 @@
 #include <CLI/CLI.hpp>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/Suggest.h"
 #include "vesica/core/Version.h"
+#include "vesica/pipelines/ParameterReference.h"
 #include "vesica/pipelines/Plan.h"
 #include "vesica/pipelines/Runner.h"
 #include "vesica/pipelines/SnakemakeExport.h"
 #include "vesica/pipelines/Staleness.h"
 #include "vesica/pipelines/StudyReport.h"
-#include "vesica/pipelines/Suggest.h"
 
 namespace fs = std::filesystem;
 
@@ -39,7 +40,10 @@ Usage:
                                        each stage: fresh, stale or missing, and why
   vesica export --snakemake FILE [--workdir DIR] > Snakefile
                                        the same pipeline as a Snakemake workflow
-  vesica phantom OUT_DIR [args...]     synthetic CT: runs vesica-phantom -o OUT_DIR args...
+  vesica parameters [TOOL] [--json]    every stage parameter: key, unit, default, range
+                                       (docs/parameters.md is this output)
+  vesica phantom OUT_DIR [args...]     synthetic CT or MR (--modality mr): runs
+                                       vesica-phantom -o OUT_DIR args...
   vesica help | --version
 
 Stage executables vesica-<tool> are looked up beside this program.
@@ -85,7 +89,27 @@ int validate(int argc, char** argv) {
   if (int rc = parse(app, argc, argv); rc >= 0) return rc;
   Loaded l = load(file, workdir);
   if (l.exit_code) return l.exit_code;
-  std::printf("%s: ok (%zu stages)\n", file.c_str(), l.plan.stages.size());
+  std::string unchecked;
+  for (const auto& tool : l.plan.unchecked_tools)
+    unchecked += (unchecked.empty() ? "" : ", ") + tool;
+  std::printf("%s: ok (%zu stages)%s\n", file.c_str(), l.plan.stages.size(),
+              unchecked.empty()
+                  ? ""
+                  : ("; params of " + unchecked + " not checked (no parameter table yet)").c_str());
+  return 0;
+}
+
+int parameters(int argc, char** argv) {
+  CLI::App app("Print the stages' parameter tables", "parameters");
+  std::string tool;
+  bool json = false;
+  app.add_option("tool", tool, "Only this stage tool");
+  app.add_flag("--json", json, "JSON instead of Markdown");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  if (json)
+    std::cout << parameter_reference_json(tool).dump(2) << "\n";
+  else
+    std::cout << parameter_reference_markdown(tool);
   return 0;
 }
 
@@ -212,8 +236,8 @@ int phantom(int argc, char** argv) {
 }  // namespace
 
 int vesica_main(int argc, char** argv) {
-  const std::vector<std::string> commands = {"validate", "run",     "status",
-                                             "export",   "phantom", "help"};
+  const std::vector<std::string> commands = {"validate", "run",  "status",    "export",
+                                             "phantom",  "help", "parameters"};
   if (argc < 2) {
     std::fputs(kHelp, stderr);
     return 2;
@@ -233,6 +257,7 @@ int vesica_main(int argc, char** argv) {
     if (command == "status") return status(argc - 1, argv + 1);
     if (command == "export") return export_workflow(argc - 1, argv + 1);
     if (command == "phantom") return phantom(argc - 1, argv + 1);
+    if (command == "parameters") return parameters(argc - 1, argv + 1);
     std::fprintf(stderr, "vesica: unknown command '%s'%s (see vesica help)\n", command.c_str(),
                  did_you_mean(command, commands).c_str());
     return 2;

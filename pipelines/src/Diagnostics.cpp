@@ -1,5 +1,8 @@
 #include "vesica/pipelines/Diagnostics.h"
 
+#include <algorithm>
+#include <tuple>
+
 namespace vesica::pipelines {
 
 void Diagnostics::add(SourcePos pos, std::string message) {
@@ -7,8 +10,13 @@ void Diagnostics::add(SourcePos pos, std::string message) {
 }
 
 std::string Diagnostics::format(const std::string& file) const {
+  // In file order, as a reader goes through the file; the checks find them in their own.
+  std::vector<Diagnostic> sorted = items_;
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::tie(a.pos.line, a.pos.column) < std::tie(b.pos.line, b.pos.column);
+  });
   std::string out;
-  for (const auto& d : items_) {
+  for (const auto& d : sorted) {
     out += file;
     if (d.pos.line > 0)
       out += ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column);

@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "vesica/core/Suggest.h"
 #include "vesica/pipelines/StudyMetrics.h"
-#include "vesica/pipelines/Suggest.h"
 
 namespace fs = std::filesystem;
 
@@ -147,7 +147,7 @@ class Reader {
         if (map(x, where))
           for (const auto& p : x) {
             Param param;
-            if (read_param(p.first.as<std::string>(), p.second, where, param))
+            if (read_param(p.first.as<std::string>(), pos_of(p.first), p.second, where, param))
               s.params.push_back(param);
           }
       } else {
@@ -171,9 +171,10 @@ class Reader {
   // Plain (unquoted) true/false become a bare flag or nothing; quoted stays a value.
   static bool is_plain(const YAML::Node& x) { return x.Tag() == "?"; }
 
-  bool read_param(const std::string& key, const YAML::Node& x, const std::string& where,
-                  Param& param) {
+  bool read_param(const std::string& key, SourcePos key_pos, const YAML::Node& x,
+                  const std::string& where, Param& param) {
     param.key = key;
+    param.key_pos = key_pos;
     param.pos = pos_of(x);
     if (x.IsScalar()) {
       const std::string text = x.as<std::string>();
@@ -245,7 +246,8 @@ class Reader {
       }
       for (const auto& item : kv.second) {
         Param p;
-        if (read_param(param, item, "study.matrix." + axis.stage, p)) axis.values.push_back(p);
+        if (read_param(param, axis.pos, item, "study.matrix." + axis.stage, p))
+          axis.values.push_back(p);
       }
       spec_.study.matrix.push_back(axis);
     }
@@ -296,7 +298,8 @@ class Reader {
           Override ov;
           std::string param;
           if (!split_stage_param(o.first, ov.stage, param)) continue;
-          if (read_param(param, o.second, "study.variants." + variant.name, ov.param))
+          if (read_param(param, pos_of(o.first), o.second, "study.variants." + variant.name,
+                         ov.param))
             variant.overrides.push_back(ov);
         }
       spec_.study.variants.push_back(variant);

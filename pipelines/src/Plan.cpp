@@ -7,8 +7,9 @@
 #include <map>
 #include <set>
 
+#include "vesica/core/Suggest.h"
+#include "vesica/pipelines/ParameterCheck.h"
 #include "vesica/pipelines/StudyExpansion.h"
-#include "vesica/pipelines/Suggest.h"
 
 namespace fs = std::filesystem;
 
@@ -80,6 +81,7 @@ class Planner {
   }
 
   Plan build() {
+    plan_.unchecked_tools = check_parameters(spec_, d_);
     resolve_stages();
     find_dependencies();
     check_duplicate_outputs();

@@ -8,7 +8,7 @@
 
 #include "vesica/core/Error.h"
 #include "vesica/pipelines/ChildProcess.h"
-#include "vesica/pipelines/Suggest.h"
+#include "vesica/core/Suggest.h"
 
 namespace fs = std::filesystem;
 

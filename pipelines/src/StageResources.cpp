@@ -247,7 +247,7 @@ double level2_mb(double tetrahedra) {
   return 100.0 + 0.025 * tetrahedra;
 }
 
-// The cystometry simulate and the calibration run (CystometryProtocol's defaults).
+// The cystometry simulate and the calibration run (ProtocolSettings's defaults).
 Cost simulate_cost(const Plan& plan, std::size_t i) {
   const PlannedStage& s = plan.stages[i];
   const MeshSize size = mesh_size_for(plan, i);

@@ -15,7 +15,6 @@
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
 #include "vesica/simulate/MeshReader.h"
-#include "vesica/simulate/fluid/FluidCystometry.h"
 
 namespace fs = std::filesystem;
 using namespace vesica;
@@ -38,7 +37,7 @@ std::vector<double> parse_list(const std::string& text, const std::string& optio
 
 // Default K/μ: the wall is mostly water, so nearly incompressible. With the thesis's
 // K/μ = 2 and the Ogden β = 9 the wall dilates instead of thinning and its pressure peaks
-// at 1.48x the residual volume (74 ml from 50 ml, physics.md §6), so a cystometry to
+// at 1.48x the residual volume (74 ml from 50 ml, docs/physics.md §6), so a cystometry to
 // capacity would run down a falling branch.
 constexpr double kDefaultBulkPerShear = 1000.0;
 
@@ -52,10 +51,9 @@ struct Cli {
   bool no_wrinkling = false;
   bool dynamic = false;
   double bossak_alpha = -0.1;
-  int level = 1;
-  fluid::FluidRunOptions fluid;
   WallOptions wall;
-  CystometryProtocol protocol;
+  ProtocolSettings protocol;
+  RunOptions run;
 };
 
 MaterialSpec material_spec(const Cli& c) {
@@ -76,7 +74,7 @@ MaterialSpec material_spec(const Cli& c) {
     spec.params["beta" + std::to_string(a + 1)] = betas[a];
     spec.params["tau" + std::to_string(a + 1)] = taus[a];
   }
-  if (betas.empty() && c.material == "maxwell") {  // thesis fit (physics.md §2)
+  if (betas.empty() && c.material == "maxwell") {  // thesis fit (docs/physics.md §2)
     spec.params["beta1"] = 0.15;
     spec.params["tau1"] = 1e-4;
   }
@@ -90,7 +88,7 @@ int main(int argc, char** argv) {
                "vesica-simulate"};
   CommonOptions common;
   Cli c;
-  CystometryProtocol& p = c.protocol;
+  ProtocolSettings& p = c.protocol;
   app.add_option("mesh", c.mesh, ".vtu from vesica-mesh (or its .msh), or a surface .vtp/.stl (mm)")
       ->required();
   app.add_option("-o,--output", c.output, "output folder: history.csv, series.pvd, summary.json")
@@ -160,16 +158,16 @@ int main(int argc, char** argv) {
   app.add_flag("--dynamic", c.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
   app.add_option("--bossak-alpha", c.bossak_alpha, "Bossak alpha in [-1/3, 0]")
       ->capture_default_str();
-  app.add_option("--level", c.level,
+  app.add_option("--level", c.run.level,
                  "1: urine as a hydrostatic volume (seconds); 2: Navier–Stokes urine on the "
                  "tetrahedra of vesica-mesh --fluid (velocity, wall shear; minutes)")
       ->check(CLI::IsMember({1, 2}))
       ->capture_default_str();
-  app.add_option("--fluid-dt-s", c.fluid.fill_dt_s, "level 2: time step while filling")
+  app.add_option("--fluid-dt-s", c.run.level2.fill_dt_s, "level 2: time step while filling")
       ->capture_default_str();
-  app.add_option("--void-dt-s", c.fluid.void_dt_s, "level 2: time step while voiding")
+  app.add_option("--void-dt-s", c.run.level2.void_dt_s, "level 2: time step while voiding")
       ->capture_default_str();
-  app.add_option("--urine-viscosity-pa-s", c.fluid.urine_viscosity, "level 2: urine viscosity")
+  app.add_option("--urine-viscosity-pa-s", c.run.level2.urine_viscosity, "level 2: urine viscosity")
       ->capture_default_str();
   app.add_flag("--no-series", c.no_series, "do not write the .pvd/.vtu series");
   add_common_options(app, common);
@@ -185,6 +183,15 @@ int main(int argc, char** argv) {
     p.gravity = !c.no_gravity;
     p.void_after_fill = !c.no_void;
     p.wrinkling = !c.no_wrinkling;
+    RunOptions& options = c.run;
+    options.output_dir = c.output;
+    options.write_series = !c.no_series;
+    if (!(c.bossak_alpha >= -1.0 / 3.0 && c.bossak_alpha <= 0.0))
+      usage_error("--bossak-alpha must lie in [-1/3, 0]");
+    options.dynamic = c.dynamic;
+    options.bossak_alpha = c.bossak_alpha;
+    options.reference = c.wall.reference;
+    validate(p, options);  // before reading anything
     const MaterialSpec spec = material_spec(c);
     make_material(spec);  // reject bad parameters before reading anything
     WallModel wall;
@@ -193,14 +200,6 @@ int main(int argc, char** argv) {
       wall = load_wall(c.mesh, c.wall);
     }
     record.add_input(c.mesh);
-    RunOptions options;
-    options.output_dir = c.output;
-    options.write_series = !c.no_series;
-    if (!(c.bossak_alpha >= -1.0 / 3.0 && c.bossak_alpha <= 0.0))
-      usage_error("--bossak-alpha must lie in [-1/3, 0]");
-    options.dynamic = c.dynamic;
-    options.bossak_alpha = c.bossak_alpha;
-    options.reference = c.wall.reference;
     Progress progress("simulate");  // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     auto& params = record.parameters();
@@ -224,24 +223,19 @@ int main(int argc, char** argv) {
     params["straining_kpa"] = p.straining_kpa;
     params["wall_drag_pa_s_per_m"] = p.wall_drag_pa_s_per_m;
     params["wrinkling"] = p.wrinkling;
-    params["level"] = c.level;
+    params["level"] = options.level;
     CystometryResult result;
-    if (c.level == 2) {
-      if (c.dynamic || c.wall.reference != ReferenceState::Scale)
-        usage_error("--level 2 supports --reference scale without --dynamic");
+    if (options.level == 2) {
       fluid::FluidMesh urine;
       {
         PhaseTimer timer(record, "read");
-        urine = fluid::urine_in_reference(read_urine(c.mesh), wall);
+        urine = read_urine(c.mesh);
       }
-      params["fluid_dt_s"] = c.fluid.fill_dt_s;
-      params["void_dt_s"] = c.fluid.void_dt_s;
-      params["urine_viscosity_pa_s"] = c.fluid.urine_viscosity;
-      c.fluid.output_dir = c.output;
-      c.fluid.write_series = options.write_series;
-      c.fluid.on_progress = options.on_progress;
+      params["fluid_dt_s"] = options.level2.fill_dt_s;
+      params["void_dt_s"] = options.level2.void_dt_s;
+      params["urine_viscosity_pa_s"] = options.level2.urine_viscosity;
       PhaseTimer timer(record, "simulate");
-      result = fluid::run_fluid_cystometry(wall, urine, spec, p, c.fluid);
+      result = run_cystometry(wall, spec, p, options, &urine);
     } else {
       PhaseTimer timer(record, "simulate");
       result = run_cystometry(wall, spec, p, options);
@@ -249,7 +243,7 @@ int main(int argc, char** argv) {
     const fs::path out(c.output);
     record.add_output(out / "history.csv");
     if (options.write_series) record.add_output(out / "series.pvd");
-    if (options.write_series && c.level == 2) record.add_output(out / "fluid.pvd");
+    if (options.write_series && options.level == 2) record.add_output(out / "fluid.pvd");
     record.summary() = result.summary;
     record.write(out / "summary.json",
                  default_manifest_path(common, (out / "summary.json").string()));

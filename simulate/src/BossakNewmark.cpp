@@ -1,4 +1,4 @@
-#include "vesica/simulate/BossakNewmark.h"
+#include "BossakNewmark.h"
 
 #include <stdexcept>
 

@@ -1,8 +1,6 @@
 #include "vesica/simulate/CystometrySummary.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <sstream>
 
 #include "vesica/core/Units.h"
 
@@ -46,36 +44,6 @@ void summarize_history(const std::vector<HistoryRow>& h, std::size_t capacity_in
     s["booi"] = pdet_qmax - 2.0 * qmax;
     s["bci"] = pdet_qmax + 5.0 * qmax;
   }
-}
-
-std::string step_failure_text(double t_s, double volume_m3, const std::string& reason) {
-  std::ostringstream s;
-  s.precision(6);
-  s << "step failed at t = " << t_s << " s, V = " << units::ml_from_m3(volume_m3)
-    << " ml: " << reason;
-  return s.str();
-}
-
-std::string no_voiding_note(const CystometryProtocol& protocol, double pves_pa) {
-  if (protocol.detrusor_kpa > 0.0 || protocol.straining_kpa > 0.0 ||
-      units::cmh2o_from_pa(pves_pa) >= protocol.p_open_cmh2o)
-    return "";
-  return "no voiding: Pves stays below the opening pressure without detrusor_kpa or "
-         "straining_kpa";
-}
-
-std::pair<std::string, double> protocol_progress(const HistoryRow& row,
-                                                 const CystometryProtocol& protocol, bool voiding) {
-  char step[64];
-  if (!voiding) {
-    const double span = protocol.capacity_ml - protocol.start_ml;
-    const double done = span > 0.0 ? std::clamp(row.infused_ml / span, 0.0, 1.0) : 1.0;
-    std::snprintf(step, sizeof step, "filling %.0f ml", row.volume_ml);
-    return {step, 0.8 * done};
-  }
-  const double total = row.voided_ml + row.volume_ml;
-  std::snprintf(step, sizeof step, "voiding %.0f ml", row.volume_ml);
-  return {step, 0.8 + 0.2 * (total > 0.0 ? row.voided_ml / total : 1.0)};
 }
 
 }  // namespace vesica::simulate

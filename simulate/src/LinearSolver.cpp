@@ -1,4 +1,4 @@
-#include "vesica/simulate/LinearSolver.h"
+#include "LinearSolver.h"
 
 #include "SymmetricIndefiniteLdlt.h"
 
@@ -28,8 +28,8 @@ constexpr double kSymmetryTolerance = 1e-14;
 
 // UMFPACK allocates and frees its multi-megabyte numeric workspace at every factorization.
 // glibc serves such blocks by mmap and returns them to the system at free, so each
-// factorization page-faults its whole workspace in again (measured: 1.5 million faults,
-// 20 % of the CPU time of a calibration). Keeping blocks up to 32 MiB (glibc's largest
+// factorization page-faults its whole workspace in again, a large share of a
+// calibration's CPU time. Keeping blocks up to 32 MiB (glibc's largest
 // allowed threshold) in the heap and not trimming it lets the next factorization reuse
 // the same pages. Process-wide, once; the cost is that freed memory stays with the process.
 void keep_solver_workspaces_resident() {
@@ -44,9 +44,8 @@ void keep_solver_workspaces_resident() {
 
 // Debian's CHOLMOD opens an OpenMP team (up to 4 threads, more than our 2 cores) for each
 // supernode to copy K into the factor: memory-bound work that the team's wake-ups and
-// waits make slower (measured on the 5,000-triangle balloon: 140,000 context switches,
-// 3.8 s CPU against 2.7 s serial). The dense work runs in the BLAS's own threads and
-// the element loop in ours, so OpenMP regions run serially. Process-wide, once.
+// waits make slower than serial copying. The dense work runs in the BLAS's own threads
+// and the element loop in ours, so OpenMP regions run serially. Process-wide, once.
 void serialize_openmp_regions() {
   static std::once_flag once;
   std::call_once(once, [] { omp_set_max_active_levels(0); });
@@ -54,8 +53,8 @@ void serialize_openmp_regions() {
 
 // The supernodes of a membrane tangent are small (a few hundred columns), too small for
 // BLAS threads to pay off, and the element loop already uses the cores: with OpenBLAS as
-// the system BLAS, one BLAS thread unless OPENBLAS_NUM_THREADS says otherwise (measured on
-// the shared 2-core machine: 2.4 s CPU against 3.1-6.0 s with two BLAS threads). The BLAS
+// the system BLAS, one BLAS thread unless OPENBLAS_NUM_THREADS says otherwise (two BLAS
+// threads cost more CPU time and were slower on a shared 2-core machine). The BLAS
 // is whatever libblas.so.3 points to, so OpenBLAS is looked up at run time.
 void single_threaded_blas() {
   static std::once_flag once;
@@ -73,24 +72,27 @@ struct LinearSolver::Backends {
   using Matrix = Eigen::SparseMatrix<double>;
   Eigen::UmfPackLU<Matrix> lu;
   Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> llt;
-  SymmetricIndefiniteLdlt ldlt;
+  // MUMPS is started only when a symmetric indefinite K first needs it.
+  std::unique_ptr<SymmetricIndefiniteLdlt> ldlt;
   bool lu_analyzed = false, llt_analyzed = false;
 };
 
-LinearSolver::LinearSolver() : backends_(std::make_unique<Backends>()) {
+LinearSolver::LinearSolver(Symmetry symmetry, Refinement refinement)
+    : backends_(std::make_unique<Backends>()), symmetry_(symmetry) {
   keep_solver_workspaces_resident();
   serialize_openmp_regions();
   single_threaded_blas();
   // Newton corrects any solve error at the next iteration, so UMFPACK's iterative
-  // refinement (two extra residual evaluations and solves per right-hand side) only costs.
-  backends_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
+  // refinement (two extra residual evaluations and solves per right-hand side) only costs
+  // unless asked for.
+  if (refinement == Refinement::None) backends_->lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
   // A not-positive-definite K is an expected outcome (we then fall back to LDLᵀ): no
   // CHOLMOD warning on stdout.
   backends_->llt.cholmod().print = 0;
   // Fill-reducing ordering: AMD and METIS both tried once, the one with less fill kept.
   // CHOLMOD's default stops at AMD when its fill looks acceptable, but on a membrane mesh
-  // nested dissection is better (16,928-triangle sphere: 5.1e8 against 8.7e8 flops, 37
-  // against 46 ms a factorization), for 30 ms more analysis once per run.
+  // nested dissection is better (less fill and fewer flops per factorization on a large
+  // sphere), for a little more analysis once per run.
   cholmod_common& c = backends_->llt.cholmod();
   c.nmethods = 2;
   c.method[0].ordering = CHOLMOD_AMD;
@@ -122,20 +124,23 @@ bool LinearSolver::is_symmetric(const Eigen::SparseMatrix<double>& K) {
   return true;
 }
 
+bool LinearSolver::factorize_lu(const Eigen::SparseMatrix<double>& K) {
+  Backends& b = *backends_;
+  if (!b.lu_analyzed) {
+    b.lu.analyzePattern(K);
+    b.lu_analyzed = true;
+  }
+  b.lu.factorize(K);
+  factorized_ = b.lu.info() == Eigen::Success;
+  method_ = Method::LU;
+  return factorized_;
+}
+
 bool LinearSolver::factorize(const Eigen::SparseMatrix<double>& K) {
   factorized_ = false;
   method_ = Method::None;
   Backends& b = *backends_;
-  if (!is_symmetric(K)) {
-    if (!b.lu_analyzed) {
-      b.lu.analyzePattern(K);
-      b.lu_analyzed = true;
-    }
-    b.lu.factorize(K);
-    factorized_ = b.lu.info() == Eigen::Success;
-    method_ = Method::LU;
-    return factorized_;
-  }
+  if (symmetry_ == Symmetry::Unsymmetric || !is_symmetric(K)) return factorize_lu(K);
   if (try_cholesky_) {
     if (!b.llt_analyzed) {
       b.llt.analyzePattern(K);
@@ -148,9 +153,10 @@ bool LinearSolver::factorize(const Eigen::SparseMatrix<double>& K) {
       return true;
     }
   }
-  factorized_ = b.ldlt.factorize(K);
+  if (!b.ldlt) b.ldlt = std::make_unique<SymmetricIndefiniteLdlt>();
+  factorized_ = b.ldlt->factorize(K);
   method_ = Method::SymmetricIndefinite;
-  try_cholesky_ = factorized_ && b.ldlt.negative_pivots() == 0;
+  try_cholesky_ = factorized_ && b.ldlt->negative_pivots() == 0;
   return factorized_;
 }
 
@@ -159,7 +165,7 @@ int LinearSolver::negative_eigenvalues() const {
     case Method::Cholesky:
       return 0;
     case Method::SymmetricIndefinite:
-      return backends_->ldlt.negative_pivots();
+      return backends_->ldlt->negative_pivots();
     default:
       return -1;
   }
@@ -170,7 +176,7 @@ Eigen::MatrixXd LinearSolver::solve(const Eigen::MatrixXd& B) const {
     case Method::Cholesky:
       return backends_->llt.solve(B);
     case Method::SymmetricIndefinite:
-      return backends_->ldlt.solve(B);
+      return backends_->ldlt->solve(B);
     default:
       return backends_->lu.solve(B);
   }

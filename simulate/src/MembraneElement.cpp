@@ -1,9 +1,9 @@
-#include "vesica/simulate/MembraneElement.h"
+#include "MembraneElement.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "vesica/simulate/TensionField.h"
+#include "TensionField.h"
 
 namespace vesica::simulate {
 
@@ -48,7 +48,7 @@ MembraneResponse membrane_response(const MembraneGeometry& geo,
 
   // B maps nodal displacement variations to (δE11, δE22, 2 δE12).
   Eigen::Matrix<double, 3, 9> B;
-  for (int a = 0; a < 3; ++a) {
+  for (Eigen::Index a = 0; a < 3; ++a) {
     const Eigen::Vector3d g1 = r.g.col(0), g2 = r.g.col(1);
     B.block<1, 3>(0, 3 * a) = geo.dN(0, a) * g1.transpose();
     B.block<1, 3>(1, 3 * a) = geo.dN(1, a) * g2.transpose();
@@ -61,10 +61,10 @@ MembraneResponse membrane_response(const MembraneGeometry& geo,
   const Eigen::Matrix<double, 9, 3> BtD = HA * B.transpose() * r.stress.D;
   r.K.noalias() = BtD.lazyProduct(B);
   // Geometric stiffness of the full S: the consistent tangent, also where the wall is in
-  // compression (there it is negative; the tissue drag of the cavity run keeps the
-  // system well-posed, CavityRun.cpp).
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
+  // compression (there it is negative; the tissue drag of the cavity models keeps the
+  // system well-posed, ProtocolSettings::wall_drag_pa_s_per_m).
+  for (Eigen::Index a = 0; a < 3; ++a)
+    for (Eigen::Index b = 0; b < 3; ++b) {
       const double kg = HA * geo.dN.col(a).dot(S * geo.dN.col(b));
       r.K.block<3, 3>(3 * a, 3 * b).diagonal().array() += kg;
     }

@@ -1,4 +1,4 @@
-#include "vesica/simulate/MembraneProblem.h"
+#include "MembraneProblem.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "vesica/simulate/PlaneStress.h"
+#include "PlaneStress.h"
 
 #include <cfloat>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "vesica/simulate/PressureLoad.h"
+#include "PressureLoad.h"
 
 namespace vesica::simulate {
 namespace {
@@ -22,11 +22,11 @@ PressureResponse pressure_response(const std::array<Eigen::Vector3d, 3>& x,
   for (int b = 0; b < 3; ++b) dn2[b] = -skew(x[(b + 1) % 3] - x[(b + 2) % 3]);
   const Eigen::RowVector3d dp =  // ∂p_c/∂x_c
       inside.rho * inside.gravity.transpose() - outside.rho * outside.gravity.transpose();
-  for (int a = 0; a < 3; ++a) {
+  for (Eigen::Index a = 0; a < 3; ++a) {
     const double s = p[a] + P;
     r.f.segment<3>(3 * a) = n2 * s / 24.0;
     r.dfdp0.segment<3>(3 * a) = n2 * 4.0 / 24.0;
-    for (int b = 0; b < 3; ++b) {
+    for (Eigen::Index b = 0; b < 3; ++b) {
       const double ds = (a == b ? 2.0 : 1.0);
       r.dfdx.block<3, 3>(3 * a, 3 * b) = (s * dn2[b] + ds * n2 * dp) / 24.0;
     }
@@ -36,7 +36,8 @@ PressureResponse pressure_response(const std::array<Eigen::Vector3d, 3>& x,
 
 Eigen::Matrix<double, 9, 1> volume_gradient(const std::array<Eigen::Vector3d, 3>& x) {
   Eigen::Matrix<double, 9, 1> g;
-  for (int a = 0; a < 3; ++a) g.segment<3>(3 * a) = x[(a + 1) % 3].cross(x[(a + 2) % 3]) / 6.0;
+  for (Eigen::Index a = 0; a < 3; ++a)
+    g.segment<3>(3 * a) = x[(a + 1) % 3].cross(x[(a + 2) % 3]) / 6.0;
   return g;
 }
 

@@ -1,9 +1,9 @@
-#include "vesica/simulate/PrestressReference.h"
+#include "PrestressReference.h"
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 
 namespace vesica::simulate {
 namespace {

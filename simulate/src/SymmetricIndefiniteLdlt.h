@@ -2,11 +2,10 @@
 // Sparse LDLᵀ of a symmetric, possibly indefinite matrix: MUMPS's multifrontal
 // factorization with threshold (1×1 and 2×2) pivoting, sequential build. Under volume
 // control past the pressure limit point the wall tangent K is symmetric but indefinite;
-// Cholesky fails there, and an unsymmetric LU of it costs three times as much (measured on
-// the 16,928-triangle sphere: UMFPACK 150 ms, this 51 ms; CHOLMOD's Cholesky of a definite
-// matrix of the same pattern 46 ms with AMD, 37 ms with METIS). The factorization also
-// gives K's inertia: the number of negative pivots is the number of negative eigenvalues
-// (Sylvester).
+// Cholesky fails there, and an unsymmetric LU of it costs about three times as much, while
+// this costs about as much as a Cholesky of a definite matrix of the same pattern. The
+// factorization also gives K's inertia: the number of negative pivots is the number of
+// negative eigenvalues (Sylvester).
 #include <memory>
 #include <vector>
 

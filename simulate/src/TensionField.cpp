@@ -1,4 +1,4 @@
-#include "vesica/simulate/TensionField.h"
+#include "TensionField.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,8 +145,8 @@ bool solve_wrinkle_width_jointly(const Material& material, const Eigen::Matrix2d
 PlaneStressState tension_field_stress(const Material& material, const Eigen::Matrix2d& C2,
                                       const MaterialPoint& point, double J2_guess,
                                       const double* history_old, double* history_new) {
-  // Closed-form 2x2 eigen decompositions: the iterative solver's took 4-5 % of the CPU time
-  // of a cystometry.
+  // Closed-form 2x2 eigen decompositions: the iterative solver's took a noticeable share of
+  // a cystometry's CPU time.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> stretches;
   stretches.computeDirect(C2);
   const bool isotropic_elastic = material.isotropic_elastic() && point.active_stress_pa == 0.0;
@@ -214,9 +214,8 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   // so as symmetric as 𝔻 itself (the Hessian of W* for an elastic law) — but only at the
   // exact wrinkle solution: Jz⁻¹ amplifies the round-off of a narrow wrinkle (small β)
   // beyond LinearSolver's 1e-14 symmetry test, and a single such element sent the whole
-  // tangent to the LU, at three times the cost of LDLᵀ (16,928-triangle sphere: 151 →
-  // 118 s without it, no LU left). For a symmetric 𝔻 the correction's asymmetric part is
-  // that round-off, so it is dropped.
+  // tangent to the LU, at about three times the cost of LDLᵀ. For a symmetric 𝔻 the
+  // correction's asymmetric part is that round-off, so it is dropped.
   const Eigen::Matrix<double, 3, 2> Ew = w.strain_derivatives(beta);
   const Eigen::Matrix<double, 2, 3> P = w.projection();
   const Eigen::Matrix2d Jz = wrinkle_jacobian(w, s, beta);

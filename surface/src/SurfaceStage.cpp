@@ -203,38 +203,6 @@ RegionSummary tag_regions(const SurfaceStageOptions& options, const TriangleSurf
 
 }  // namespace
 
-nlohmann::json effective_parameters(const SurfaceStageOptions& o) {
-  nlohmann::json p = {
-      {"label", o.label},
-      {"edge_mm", o.edge_mm},
-      {"target_triangles", o.target_triangles},
-      {"remesh_iterations", o.remesh_iterations},
-      {"smooth_iterations", o.smoothing.iterations},
-      {"pass_band", o.smoothing.pass_band},
-      {"volume_rescale", o.volume_rescale},
-      {"fill_holes", o.repair.fill_holes},
-      {"max_hole_mm", o.repair.max_hole_perimeter_mm},
-      {"outlet", o.regions.outlet ? nlohmann::json(xyz(*o.regions.outlet)) : "auto"},
-      {"outlet_radius_mm", o.regions.outlet_radius_mm},
-      {"inlet_radius_mm", o.regions.inlet_radius_mm},
-      {"fixed_radius_mm", o.regions.fixed_radius_mm},
-      {"fixed_below_mm", o.regions.fixed_below_mm},
-      {"support_below_mm", o.regions.support_below_mm},
-      {"stl_ascii", o.write.stl_ascii}};
-  p["inlets"] = nlohmann::json::array();
-  for (const auto& inlet : o.regions.inlets) p["inlets"].push_back(xyz(inlet));
-  if (o.morph) p["morph"] = xyz(*o.morph);
-  if (o.shape) {
-    static const char* names[] = {"sphere", "ellipsoid", "pouch"};
-    p["shape"] = names[static_cast<int>(o.shape->kind)];
-    p["volume_ml"] = o.shape->volume_ml;
-    p["elongation"] = o.shape->elongation;
-    p["neck_radius_mm"] = o.shape->neck_radius_mm;
-    if (o.shape->semi_axes_mm) p["semi_axes"] = xyz(*o.shape->semi_axes_mm);
-  }
-  return p;
-}
-
 nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChecks& checks) {
   const Eigen::VectorXd angles = triangle_min_angles_deg(surface.V, surface.F);
   const double area = surface_area(surface.V, surface.F);
@@ -261,7 +229,6 @@ nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChec
 }
 
 TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecord& record) {
-  record.parameters().update(effective_parameters(options));
   record.summary()["notes"] = nlohmann::json::array();
   TriangleSurface input;  // a surface file as read, with its tags; empty otherwise
   TriangleSurface surface = build_surface(options, record, input);

@@ -136,8 +136,9 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
                             "    params: {seed: auto, lower_hu: -20, fluid: true, no_void: false,"
                             " seed_point: [1, 2.5, 3], label: 'true'}\n"
                             "  surface:\n"
+                            "    tool: teststage\n"
                             "    input: seg/bladder.nii.gz\n"
-                            "    inputs: {extra_mask: '${inputs.ct}'}\n"
+                            "    inputs: {aux: '${inputs.ct}'}\n"
                             "    output: bladder.vtp\n"
                             "    report: reports/surface.json\n",
                             d);
@@ -162,7 +163,7 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
                                             "seg/segment.manifest.json"};
   EXPECT_EQ(plan.stages[0].argv, segment);
   const std::vector<std::string> surface = {
-      "seg/bladder.nii.gz",   "-o",       "bladder.vtp",          "--extra-mask",
+      "seg/bladder.nii.gz",   "-o",       "bladder.vtp",          "--aux",
       "../../data/ct",        "--report", "reports/surface.json", "--manifest",
       "surface.manifest.json"};
   EXPECT_EQ(plan.stages[1].argv, surface);

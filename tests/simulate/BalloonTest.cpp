@@ -1,4 +1,4 @@
-// Spherical balloon (physics.md §6) with ≥ 2,000 triangles.
+// Spherical balloon (docs/physics.md §6) with ≥ 2,000 triangles.
 //  - Pressure control to 95 % of the limit pressure, K/μ = 10³: P(λ) within 1 % of
 //    2 (H/R) μ (λ⁻¹ - λ⁻⁷); wall stress within 2 % of Laplace's σ = P r / (2 h);
 //    quadratic Newton convergence (logged).
@@ -10,9 +10,9 @@
 
 #include <cmath>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica::simulate;
@@ -62,7 +62,7 @@ struct Balloon {
     V0 = enclosed_volume(wall, x);
   }
   NewtonReport solve(const CavityEquation& c) {
-    const NewtonReport r = solver->solve(c, loads, x);
+    NewtonReport r = solver->solve(c, loads, x);
     if (r.converged) problem->commit();
     return r;
   }

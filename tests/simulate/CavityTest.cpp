@@ -1,4 +1,4 @@
-// Level-1 wall-urine coupling (physics.md §4-5):
+// Level-1 wall-urine coupling (docs/physics.md §4-5):
 //  - hydrostatics: the fixed base carries the urine's weight ρ g V within 0.5 %;
 //  - a stiff sphere drained through a linear outlet law follows the analytic exponential
 //    V - V0 = ΔV e^(-t/(R1 C)), C = dV/dP = R V0 / (4 H μ) from the balloon formula;
@@ -8,12 +8,12 @@
 
 #include <cmath>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica;
@@ -58,10 +58,10 @@ TEST(Cavity, StiffSphereDrainsExponentiallyWithMassBalance) {
   fix_sphere_rigid_modes(wall);
   const double V0 = enclosed_volume(wall, wall.nodes);
   const double Rh = std::cbrt(3.0 * V0 / (4.0 * 3.14159265358979323846));
-  // dP/dV of the balloon at λ = 1 (physics.md §6 linearised), in cmH2O per ml.
+  // dP/dV of the balloon at λ = 1 (docs/physics.md §6 linearised), in cmH2O per ml.
   const double dPdV = units::cmh2o_from_pa(4.0 * H * mu / (Rh * V0)) * units::kM3PerMl;
   const double tau = 1.0, R1 = tau * dPdV;  // R1 C = τ
-  CystometryProtocol p;
+  ProtocolSettings p;
   p.start_ml = units::ml_from_m3(V0);
   const double dV_ml = 1e-4 * p.start_ml;
   p.capacity_ml = p.start_ml + dV_ml;
@@ -96,7 +96,7 @@ TEST(Cavity, StiffSphereDrainsExponentiallyWithMassBalance) {
 TEST(Cavity, ProtocolAboveGeometryLimitIsRefused) {
   WallModel wall = sphere_wall(0.0229, 3e-3, 6);
   fix_sphere_rigid_modes(wall);
-  CystometryProtocol p;
+  ProtocolSettings p;
   p.capacity_ml = 5000.0;  // 100 times the 50 ml reference
   try {
     run_cystometry(wall, {"neo-hookean", {}}, p, RunOptions{});
@@ -129,7 +129,7 @@ TEST(Cavity, SlackWallBelowItsReferenceTransmitsOnlyTheTissueDrag) {
   for (const auto& t : wall.triangles)
     A0 += 0.5 *
           (wall.nodes[t[1]] - wall.nodes[t[0]]).cross(wall.nodes[t[2]] - wall.nodes[t[0]]).norm();
-  CystometryProtocol p;
+  ProtocolSettings p;
   p.capacity_ml = 60.0;
   p.fill_rate_ml_min = 600.0;
   p.straining_kpa = 4.0;

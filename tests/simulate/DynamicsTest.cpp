@@ -1,4 +1,4 @@
-// Bossak–Newmark dynamics of the wall (physics.md §3) against an independent solution:
+// Bossak–Newmark dynamics of the wall (docs/physics.md §3) against an independent solution:
 // a thin incompressible neo-Hookean sphere under a suddenly applied inside pressure p
 // moves radially by Lagrange's equation for its one degree of freedom λ = r/R,
 //   ρ_w H R λ'' = λ² (p - P_s(λ)),  P_s(λ) = 2 (H/R) μ (λ⁻¹ - λ⁻⁷),
@@ -9,10 +9,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "vesica/simulate/BossakNewmark.h"
+#include "BossakNewmark.h"
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica::simulate;

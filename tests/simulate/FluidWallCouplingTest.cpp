@@ -2,7 +2,7 @@
 // neo-Hookean balloon (R = 23 mm, H = 3 mm, μ = 5 kPa, K = 1000 μ) filled with urine
 // through one inlet node:
 //  (c) slow filling (5 steps of 2 ml): the urine pressure against the analytic balloon
-//      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (physics.md §6), within 3 %, and the tet
+//      P = 2 (H/R) μ (λ⁻¹ − λ⁻⁷), λ³ = V/V0 (docs/physics.md §6), within 3 %, and the tet
 //      volume against V0 + ∫Q dt within 0.5 %;
 //  (d) wall 920 kg/m³ against urine 1000 kg/m³ with 1 ms steps: a sudden inflow and its
 //      stop do not blow up (bounded velocity, kinetic energy decays after the stop);
@@ -16,12 +16,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "MembraneProblem.h"
+#include "fluid/FluidWallCoupling.h"
+#include "fluid/TetQuality.h"
 #include "vesica/mesh/CavityMesher.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
 #include "vesica/simulate/SphereMesh.h"
-#include "vesica/simulate/fluid/FluidWallCoupling.h"
-#include "vesica/simulate/fluid/TetQuality.h"
 
 using namespace vesica::simulate;
 using namespace vesica::simulate::fluid;
@@ -96,7 +96,7 @@ struct CoupledBalloon {
   // One filling step of Q (m³/s) for dt through the inlet node, and the balloon after it
   // against the analytic curve from its start volume V0.
   struct FillingStep {
-    CouplingReport report;
+    NewtonReport report;
     double V = 0.0, lambda = 1.0, P = 0.0, exact = 0.0;
   };
   FillingStep fill(double Q, double dt, WallLoads& loads, double V0) {
@@ -162,7 +162,7 @@ TEST(FluidWallCoupling, LightWallInDenseUrineStaysStable) {
   std::vector<double> energy;
   for (int s = 1; s <= 24; ++s) {
     const bool inflow = s <= 8;
-    const CouplingReport r =
+    const NewtonReport r =
         b.coupling->step(dt, loads, inflow_at_node(b.wall, b.inlet, inflow ? Q : 0.0));
     ASSERT_TRUE(r.converged) << "step " << s << ": " << r.failure;
     if (inflow) filled += Q * dt;

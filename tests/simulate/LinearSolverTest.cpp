@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "vesica/simulate/LinearSolver.h"
+#include "LinearSolver.h"
 
 using vesica::simulate::LinearSolver;
 

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
+#include "MembraneElement.h"
+#include "MembraneProblem.h"
+#include "PressureLoad.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneElement.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/PressureLoad.h"
 
 using namespace vesica::simulate;
 

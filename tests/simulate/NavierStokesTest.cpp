@@ -1,5 +1,5 @@
 // Level-2 urine flow on rigid tetrahedral meshes (docs/navier-stokes.md), against the
-// analytic answers of physics.md §6: hydrostatics p = ρ g depth with zero velocity, and
+// analytic answers of docs/physics.md §6: hydrostatics p = ρ g depth with zero velocity, and
 // Poiseuille flow Q = π R⁴ Δp / (8 μ L). Meshes come from gmsh's OCC kernel. SI units.
 #include <gmsh.h>
 #include <gtest/gtest.h>
@@ -15,13 +15,13 @@
 #include <numeric>
 
 #include "TestData.h"
-#include "vesica/simulate/fluid/BoundaryFaces.h"
-#include "vesica/simulate/fluid/FluidNewton.h"
-#include "vesica/simulate/fluid/FluidProblem.h"
+#include "fluid/BoundaryFaces.h"
+#include "fluid/FluidNewton.h"
+#include "fluid/FluidProblem.h"
+#include "fluid/InflowPatch.h"
+#include "fluid/MeshMotion.h"
+#include "fluid/StabilizedTet.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
-#include "vesica/simulate/fluid/InflowPatch.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
-#include "vesica/simulate/fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
 namespace {
@@ -416,7 +416,7 @@ TEST(NavierStokes, UrethraOutletFollowsItsLaw) {
   for (const auto& c : plug_inflow(faces, tube.inlet, tube.on_side, q_in))
     boundary.velocity.push_back(c);
   boundary.outlets.push_back(
-      {tube.outlet, 20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml)});
+      {tube.outlet, UrethraLaw(20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml))});
   FluidProperties urine;
   urine.gravity.setZero();
   const FluidProblem problem(mesh, boundary, urine);
@@ -458,7 +458,8 @@ TEST(NavierStokes, OutletUnderGravityStaysHydrostatic) {
   FluidBoundary boundary;
   for (int i = 0; i < static_cast<int>(mesh.nodes.size()); ++i)
     if (on_wall[i]) boundary.velocity.push_back({i, {true, true, true}, Eigen::Vector3d::Zero()});
-  boundary.outlets.push_back({outlet, 20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml)});
+  boundary.outlets.push_back(
+      {outlet, UrethraLaw(20.0 * cmh2o, 0.2 * cmh2o / ml, 0.05 * cmh2o / (ml * ml))});
   const FluidProperties urine;
   const FluidProblem problem(mesh, boundary, urine);
   FluidNewton newton(problem);

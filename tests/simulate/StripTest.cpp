@@ -1,15 +1,15 @@
 // Uniaxial tension of a flat membrane strip: the nominal stress (end reaction / (H W))
 // against the analytic incompressible answers
-//   neo-Hookean:            P = μ (λ - λ⁻²)                                (physics.md §6)
+//   neo-Hookean:            P = μ (λ - λ⁻²)                                (docs/physics.md §6)
 //   + fiber family along x: P += 2 k1 (λ² - 1) exp(k2 (λ² - 1)²) λ       (from σ11 = ... + 2ψ'λ²)
 // and the perpendicular fiber family, compressed, carries nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 
 using namespace vesica::simulate;
 
@@ -71,7 +71,7 @@ std::vector<double> nominal_stresses(const MaterialSpec& spec,
 }  // namespace
 
 TEST(UniaxialStrip, NeoHookeanRubberToSevenTimesItsLength) {
-  // Thesis rubber μ (physics.md §6); K = 10⁴ μ: with the thesis K = 10 MPa (K/μ = 16) the
+  // Thesis rubber μ (docs/physics.md §6); K = 10⁴ μ: with the thesis K = 10 MPa (K/μ = 16) the
   // Ogden β = 9 term lets the strip dilate and the incompressible formula does not apply
   // (measured: P(λ=3) = 1.11 MPa instead of 1.80 MPa); K = 10³ μ is still 1.1 % soft at λ = 7.
   const double mu = 624e3, K = 1e4 * mu;

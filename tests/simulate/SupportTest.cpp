@@ -8,9 +8,9 @@
 #include <cmath>
 #include <iostream>
 
+#include "MembraneProblem.h"
+#include "NewtonSolver.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneProblem.h"
-#include "vesica/simulate/NewtonSolver.h"
 #include "vesica/simulate/SphereMesh.h"
 
 using namespace vesica::simulate;

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
+#include "MembraneElement.h"
+#include "TensionField.h"
 #include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MembraneElement.h"
-#include "vesica/simulate/TensionField.h"
 
 using namespace vesica::simulate;
 

@@ -1,4 +1,4 @@
-// Step-stretch relaxation (physics.md §2): after a sudden stretch held constant, the
+// Step-stretch relaxation (docs/physics.md §2): after a sudden stretch held constant, the
 // non-volumetric stress relaxes as S∞ (1 + Σ β_α e^(-t/τ_α)); S∞ and S_vol come from the
 // elastic neo-Hookean material at the same C.
 #include <gtest/gtest.h>

@@ -29,9 +29,14 @@ inline bool running_in_ci() {
   return ci && std::string(ci) == "true";
 }
 
-// A fresh empty folder for one test, removed by the next run of the same test.
+// A fresh empty folder for one test, removed by the next run of the same test. It lives in
+// the build tree (beside bin/), so that two checkouts testing at once never share one.
 inline std::filesystem::path scratch_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("vesica-test-" + name);
+  const char* bin = std::getenv("VESICA_BIN_DIR");
+  const std::filesystem::path root =
+      bin ? std::filesystem::path(bin).parent_path() / "test-scratch"
+          : std::filesystem::temp_directory_path() / "vesica-test-scratch";
+  auto dir = root / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -1,9 +1,9 @@
-#include "vesica/simulate/fluid/BoundaryFaces.h"
+#include "fluid/BoundaryFaces.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "vesica/simulate/fluid/StabilizedTet.h"
+#include "fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
 namespace {

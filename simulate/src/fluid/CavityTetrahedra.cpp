@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/CavityTetrahedra.h"
+#include "fluid/CavityTetrahedra.h"
 
 #include <stdexcept>
 

@@ -1,10 +1,10 @@
-#include "vesica/simulate/fluid/FluidProblem.h"
+#include "fluid/FluidProblem.h"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "vesica/simulate/fluid/StabilizedTet.h"
+#include "fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
 
@@ -32,11 +32,8 @@ FluidProblem::FluidProblem(const FluidMesh& mesh, const FluidBoundary& boundary,
   }
   for (const auto& f : boundary.pressure_faces) faces_.owner(f.nodes);  // throws if interior
   if (boundary.outlets.size() > 1) throw std::invalid_argument("more than one urethra outlet");
-  if (has_outlet()) {
-    if (!(boundary.outlets[0].r1 > 0.0) || boundary.outlets[0].r2 < 0.0)
-      throw std::invalid_argument("urethra law needs R1 > 0 and R2 >= 0");
+  if (has_outlet())
     for (const auto& f : boundary.outlets[0].faces) faces_.owner(f);
-  }
 }
 
 void FluidProblem::apply_constraints(Eigen::VectorXd& state) const {
@@ -65,7 +62,7 @@ Eigen::VectorXd FluidProblem::initial_state() const {
       area += a;
     }
     x_ref /= area;
-    p_ref = boundary_.outlets[0].opening_pressure;
+    p_ref = boundary_.outlets[0].law.opening_pressure();
     state[node_dof_count()] = p_ref;
   } else if (boundary_.pinned_pressure_node >= 0) {
     x_ref = mesh_.nodes[boundary_.pinned_pressure_node];
@@ -146,10 +143,11 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Ei
                               Eigen::VectorXd& residual,
                               std::vector<Eigen::Triplet<double>>* triplets) const {
   // Bordered system: the traction −p_out n puts p_out A n / 3 in each corner's momentum
-  // row; the last row is the law in pressure form, p_out − p_open − R1 Q − R2 Q|Q| (Pa),
+  // row; the last row is the law in pressure form, p_out − p_open − R1 Q − R2 Q|Q| (Pa,
+  // UrethraLaw::pressure_drop),
   // with Q = Σ_faces Σ_corners u·(A n)/3. Smooth in Q (unlike q(p), which has a kink at
   // p_open), so Newton converges from a closed start.
-  const UrethraOutlet& law = boundary_.outlets[0];
+  const UrethraOutlet& outlet = boundary_.outlets[0];
   const int last = node_dof_count();
   const double p_out = state[last];
   // p_out is the pressure at the outlet's centroid x_ref; over the patch the pressure has
@@ -158,7 +156,7 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Ei
   std::vector<Eigen::Vector3d> corners;  // A n / 3 of each outlet face
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   double area = 0.0, q = 0.0;
-  for (const auto& face : law.faces) {
+  for (const auto& face : outlet.faces) {
     corners.push_back(faces_.area_normal(face, x) / 3.0);
     const double a = 3.0 * corners.back().norm();
     centroid += a * (x[face[0]] + x[face[1]] + x[face[2]]) / 3.0;
@@ -167,11 +165,11 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Ei
   }
   centroid /= area;
   auto hydrostatic = [&](int v) { return fluid_.density * fluid_.gravity.dot(x[v] - centroid); };
-  residual[last] = p_out - law.opening_pressure - law.r1 * q - law.r2 * q * std::abs(q);
-  const double dlaw_dq = law.r1 + 2.0 * law.r2 * std::abs(q);
-  for (size_t f = 0; f < law.faces.size(); ++f) {
+  residual[last] = p_out - outlet.law.opening_pressure() - outlet.law.pressure_drop(q);
+  const double dlaw_dq = outlet.law.pressure_drop_derivative(q);
+  for (size_t f = 0; f < outlet.faces.size(); ++f) {
     const Eigen::Vector3d& corner = corners[f];
-    const auto& face = law.faces[f];
+    const auto& face = outlet.faces[f];
     const double h_sum = hydrostatic(face[0]) + hydrostatic(face[1]) + hydrostatic(face[2]);
     for (int v : face) {
       // ∫ N_a p dA for p linear on the triangle: A (2 p_a + p_b + p_c) / 12.

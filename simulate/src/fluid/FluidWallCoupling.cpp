@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/FluidWallCoupling.h"
+#include "fluid/FluidWallCoupling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +8,16 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
-#include <Eigen/UmfPackSupport>
 
+#include "LinearSolver.h"
+#include "PressureLoad.h"
+#include "fluid/CavityTetrahedra.h"
+#include "fluid/FluidProblem.h"
+#include "fluid/MeshMotion.h"
+#include "fluid/MeshTransfer.h"
+#include "fluid/StabilizedTet.h"
+#include "fluid/TetQuality.h"
 #include "vesica/core/Log.h"
-#include "vesica/simulate/PressureLoad.h"
-#include "vesica/simulate/fluid/CavityTetrahedra.h"
-#include "vesica/simulate/fluid/FluidProblem.h"
-#include "vesica/simulate/fluid/MeshMotion.h"
-#include "vesica/simulate/fluid/MeshTransfer.h"
-#include "vesica/simulate/fluid/StabilizedTet.h"
-#include "vesica/simulate/fluid/TetQuality.h"
 
 namespace vesica::simulate::fluid {
 
@@ -28,10 +28,7 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 // depends on z, row = where the urine residual row goes.
 struct FluidWallCoupling::Unknowns {
   Unknowns(const FluidMesh& mesh, const FluidBoundary& boundary, const FluidProperties& fluid)
-      : problem(mesh, boundary, without_gravity(fluid)) {
-    // Newton corrects the solve error at the next iteration anyway: no refinement steps.
-    lu.umfpackControl()(UMFPACK_IRSTEP) = 0;
-  }
+      : problem(mesh, boundary, without_gravity(fluid)) {}
   // The urine equations are solved for the modified pressure p̃ = p − ρ g·(x − x_h): the
   // body force ρ g and the gradient of the hydrostatic part cancel exactly (also in the
   // discrete P1 form and in the SUPG/PSPG residual), and the hydrostatic part acts on the
@@ -48,8 +45,9 @@ struct FluidWallCoupling::Unknowns {
   std::vector<int> index;  // urine dof -> z, −1 = not an unknown (fixed wall dof)
   std::vector<bool> is_wall_velocity;
   int wall_free = 0, count = 0;
-  Eigen::UmfPackLU<SparseMatrix> lu;
-  bool analyzed = false;  // the pattern is fixed until the unknowns change (outlet opens)
+  // Sparse LU of the coupled Jacobian; its pattern is analyzed once, since it is fixed until
+  // the unknowns change (the outlet opens, the urine is remeshed: new Unknowns).
+  LinearSolver lu{LinearSolver::Symmetry::Unsymmetric};
 };
 
 namespace {
@@ -90,8 +88,11 @@ Eigen::Vector3d corner_area_normal(const std::array<int, 3>& t,
 }  // namespace
 
 FluidWallCoupling::FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mesh,
-                                     const FluidProperties& fluid, CouplingOptions options)
-    : wall_(wall), mesh_(mesh), fluid_(fluid), options_(options) {
+                                     const FluidProperties& fluid, const NewtonOptions& options)
+    : wall_(wall),
+      mesh_(mesh),
+      fluid_(fluid),
+      loop_(options, ElasticFoundation(wall, options.foundation)) {
   const std::size_t n_wall = wall.wall().node_count();
   if (mesh.nodes.size() <= n_wall) throw std::invalid_argument("tet mesh has no interior node");
   for (std::size_t i = 0; i < n_wall; ++i)
@@ -101,14 +102,6 @@ FluidWallCoupling::FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mes
   Eigen::AlignedBox3d box;
   for (const auto& p : wall.wall().nodes) box.extend(p);
   x_hydrostatic_ = box.center();
-  foundation_area_.assign(wall.free_dof_count(), 0.0);
-  for (std::size_t g = 0; g < wall.dof_map().size(); ++g)
-    if (wall.dof_map()[g] >= 0) foundation_area_[wall.dof_map()[g]] = wall.node_areas()[g / 3];
-  double edges = 0.0;
-  for (const auto& t : wall.wall().triangles)
-    for (int k = 0; k < 3; ++k)
-      edges += (wall.wall().nodes[t[(k + 1) % 3]] - wall.wall().nodes[t[k]]).norm();
-  mean_edge_ = edges / (3.0 * static_cast<double>(wall.wall().triangle_count()));
   motion_ = std::make_unique<HarmonicMeshMotion>(mesh_, wall_flags(mesh_.nodes.size(), n_wall));
   build_unknowns();
   x_ = x_old_ = mesh_.nodes;
@@ -125,8 +118,8 @@ void FluidWallCoupling::build_unknowns() {
   // With the urethra open, the urine moves freely through the outlet's inner nodes (the
   // wall holds them, so they have no wall dofs): their velocities are urine unknowns.
   std::vector<bool> free_urine(n, false);
-  if (outlet_open_)
-    for (int v : inner_nodes(wall_.wall(), outlet_.faces)) free_urine[v] = true;
+  if (outlet_open())
+    for (int v : inner_nodes(wall_.wall(), outlet_->faces)) free_urine[v] = true;
   u.wall_free = static_cast<int>(wall_.free_dof_count());
   u.index.assign(u.problem.dof_count(), -1);
   u.is_wall_velocity.assign(u.problem.dof_count(), false);
@@ -320,75 +313,6 @@ WallLoads FluidWallCoupling::step_loads(double dt, const WallLoads& loads_in,
   return loads;
 }
 
-Eigen::VectorXd FluidWallCoupling::newton_increment(double dt, const WallLoads& loads,
-                                                    const std::vector<Eigen::Vector3d>& x_wall,
-                                                    const Eigen::SparseMatrix<double>& columns,
-                                                    const Eigen::SparseMatrix<double>& rows) {
-  Unknowns& u = *unknowns_;
-  AleFrame frame;
-  frame.positions = x_;
-  frame.mesh_velocity.resize(x_.size());
-  for (std::size_t i = 0; i < x_.size(); ++i) frame.mesh_velocity[i] = (x_[i] - x_old_[i]) / dt;
-  // At the wall the urine moves with the mesh: c = u − w_mesh stays zero there whatever
-  // the wall does, and the tangent must say so (without it Newton diverged next to the
-  // inflow jet, where ρ |∇u| / Δt exceeds the wall's stiffness).
-  frame.mesh_follows.assign(x_.size(), false);
-  for (std::size_t i = 0; i < wall_.wall().node_count(); ++i)
-    frame.mesh_follows[i] = u.is_wall_velocity[kDofsPerNode * i];
-  WallAssembly wall_assembly;
-  Eigen::VectorXd fluid_residual;
-  SparseMatrix fluid_jacobian;
-  wall_.assemble(x_wall, loads, true, wall_assembly);
-  u.problem.assemble(state_, state_old_, 1.0 / dt, fluid_residual, &fluid_jacobian, &frame);
-  Eigen::VectorXd residual = rows * fluid_residual;
-  residual.head(u.wall_free) += wall_assembly.residual;
-  add_swept_volume(wall_.wall(), x_old_, x_, dt, u.index, residual);
-  SparseMatrix jacobian = SparseMatrix(rows * fluid_jacobian * columns) +
-                          wall_block(wall_, x_, state_, wall_assembly.K, u.count);
-  return regularized_solve(jacobian, residual);
-}
-
-// Like the level-1 NewtonSolver: a step that would move a wall node by more than
-// max_move_per_edge mean edges (a slack wall's folds have almost no stiffness) is
-// recomputed on an elastic foundation η A at the wall dofs, η raised tenfold until the
-// step is short enough; η decays tenfold per iteration, so the converged state is the
-// unregularized one.
-Eigen::VectorXd FluidWallCoupling::regularized_solve(SparseMatrix& jacobian,
-                                                     const Eigen::VectorXd& residual) {
-  Unknowns& u = *unknowns_;
-  const double max_move = options_.max_move_per_edge * mean_edge_;
-  double stiffness_scale = 0.0, area_sum = 0.0;
-  for (int d = 0; d < u.wall_free; ++d) {
-    stiffness_scale += std::abs(jacobian.coeff(d, d));
-    area_sum += foundation_area_[d];
-  }
-  stiffness_scale /= std::max(area_sum, 1e-300);
-  double eta = eta_, eta_in_matrix = 0.0;
-  Eigen::VectorXd dz;
-  for (int attempt = 0;; ++attempt) {
-    if (eta != eta_in_matrix) {
-      for (int d = 0; d < u.wall_free; ++d)
-        jacobian.coeffRef(d, d) += (eta - eta_in_matrix) * foundation_area_[d];
-      eta_in_matrix = eta;
-    }
-    if (!u.analyzed) {
-      u.lu.analyzePattern(jacobian);
-      u.analyzed = true;
-    }
-    u.lu.factorize(jacobian);
-    if (u.lu.info() != Eigen::Success)
-      throw std::runtime_error("UMFPACK could not factorize the coupled Jacobian");
-    dz = -u.lu.solve(residual);
-    if (!dz.allFinite()) throw std::runtime_error("non-finite Newton increment");
-    const double move = max_abs(dz.head(u.wall_free));
-    if (max_move <= 0.0 || move <= max_move || attempt == 12) break;
-    eta = eta > 0.0 ? 10.0 * eta : 1e-6 * stiffness_scale;
-  }
-  if (eta > 0.0) ++regularized_iterations_;
-  eta_ = eta > 1e-9 * stiffness_scale ? 0.1 * eta : 0.0;
-  return dz;
-}
-
 double FluidWallCoupling::apply_urine_increment(const Eigen::VectorXd& dz) {
   const Unknowns& u = *unknowns_;
   double dp = 0.0;
@@ -400,11 +324,107 @@ double FluidWallCoupling::apply_urine_increment(const Eigen::VectorXd& dz) {
   return dp;
 }
 
-CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in, const Inflow& inflow) {
+// One backward-Euler step's coupled equations as a system of the Newton loop: the iterate
+// is the free wall positions x_wall and the urine state; the interior nodes stay where the
+// step's predictor put them (see step()).
+class FluidWallCoupling::System final : public NewtonSystem {
+ public:
+  System(FluidWallCoupling& coupling, double dt, const WallLoads& loads, const Inflow& inflow,
+         std::vector<Eigen::Vector3d>& x_wall)
+      : c_(coupling), dt_(dt), loads_(loads), inflow_(inflow), x_wall_(x_wall) {
+    coupling_maps(c_.unknowns_->index, c_.unknowns_->is_wall_velocity, c_.unknowns_->count, dt,
+                  columns_, rows_);
+    Eigen::AlignedBox3d box;
+    for (const auto& p : x_wall) box.extend(p);
+    size_ = box.diagonal().norm();
+  }
+
+  std::size_t unknown_count() const override {
+    return static_cast<std::size_t>(c_.unknowns_->count);
+  }
+  bool increment_converged(int increments, double move) const override {
+    const NewtonOptions& o = c_.loop_.options();
+    return increments > 0 && move <= o.increment_tolerance * size_ &&
+           dp_ <= o.pressure_tolerance * p_scale_;
+  }
+  bool tests_residual() const override { return false; }
+
+  // The coupled residual and Jacobian at the current state; throws std::runtime_error when
+  // an element or the mesh fails.
+  void evaluate() override {
+    c_.set_wall_velocities(x_wall_, dt_, inflow_);
+    c_.move_wall_nodes(x_wall_);
+    Unknowns& u = *c_.unknowns_;
+    const auto& x = c_.x_;
+    AleFrame frame;
+    frame.positions = x;
+    frame.mesh_velocity.resize(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) frame.mesh_velocity[i] = (x[i] - c_.x_old_[i]) / dt_;
+    // At the wall the urine moves with the mesh: c = u − w_mesh stays zero there whatever
+    // the wall does, and the tangent must say so (without it Newton diverged next to the
+    // inflow jet, where ρ |∇u| / Δt exceeds the wall's stiffness).
+    frame.mesh_follows.assign(x.size(), false);
+    for (std::size_t i = 0; i < c_.wall_.wall().node_count(); ++i)
+      frame.mesh_follows[i] = u.is_wall_velocity[kDofsPerNode * i];
+    WallAssembly wall_assembly;
+    Eigen::VectorXd fluid_residual;
+    SparseMatrix fluid_jacobian;
+    c_.wall_.assemble(x_wall_, loads_, true, wall_assembly);
+    u.problem.assemble(c_.state_, c_.state_old_, 1.0 / dt_, fluid_residual, &fluid_jacobian,
+                       &frame);
+    residual_ = rows_ * fluid_residual;
+    residual_.head(u.wall_free) += wall_assembly.residual;
+    add_swept_volume(c_.wall_.wall(), c_.x_old_, x, dt_, u.index, residual_);
+    jacobian_ = SparseMatrix(rows_ * fluid_jacobian * columns_) +
+                wall_block(c_.wall_, x, c_.state_, wall_assembly.K, u.count);
+  }
+
+  Eigen::SparseMatrix<double>& tangent() override { return jacobian_; }
+
+  bool solve_increment(bool /*reuse: a fresh Jacobian every iteration*/,
+                       std::string& failure) override {
+    LinearSolver& lu = c_.unknowns_->lu;
+    if (!lu.factorize(jacobian_)) {
+      failure = "could not factorize the coupled Jacobian";
+      return false;
+    }
+    dz_ = -lu.solve(residual_).col(0);
+    if (!dz_.allFinite()) {
+      failure = "non-finite Newton increment";
+      return false;
+    }
+    return true;
+  }
+
+  double increment_move() const override { return max_abs(dz_.head(c_.unknowns_->wall_free)); }
+
+  void apply_increment() override {
+    const int wall_free = c_.unknowns_->wall_free;
+    c_.wall_.apply_increment(dz_.head(wall_free), x_wall_);
+    dp_ = c_.apply_urine_increment(dz_);
+    const Eigen::VectorXd& state = c_.state_;
+    p_scale_ =
+        std::max(1.0, max_abs(state(Eigen::seqN(3, state.size() / kDofsPerNode, kDofsPerNode))));
+    vesica::log()->debug("coupled iteration: max |dx| {:.3e} m, max |dp| {:.3e} Pa",
+                         max_abs(dz_.head(wall_free)), dp_);
+  }
+
+ private:
+  FluidWallCoupling& c_;
+  const double dt_;
+  const WallLoads& loads_;
+  const Inflow& inflow_;
+  std::vector<Eigen::Vector3d>& x_wall_;
+  SparseMatrix columns_, rows_;  // the urine state's dependence on z, its rows' place in z
+  double size_ = 1.0;            // diagonal of the predicted wall's bounding box (m)
+  Eigen::VectorXd residual_, dz_;
+  SparseMatrix jacobian_;
+  double dp_ = 0.0, p_scale_ = 1.0;  // the last increment's max |Δp| and max |p̃| after it
+};
+
+NewtonReport FluidWallCoupling::step(double dt, const WallLoads& loads_in, const Inflow& inflow) {
   const WallLoads loads = step_loads(dt, loads_in, inflow);
   const std::size_t n_wall = wall_.wall().node_count();
-  SparseMatrix columns, rows;
-  coupling_maps(unknowns_->index, unknowns_->is_wall_velocity, unknowns_->count, dt, columns, rows);
   // The interior nodes move to the harmonic extension of the wall predicted from its
   // last velocity and stay there through the Newton iteration (ALE allows any interior
   // motion; the wall nodes move with the wall). Re-extending the iterate instead lagged
@@ -416,36 +436,9 @@ CouplingReport FluidWallCoupling::step(double dt, const WallLoads& loads_in, con
     for (int k = 0; k < 3; ++k)
       if (wall_.dof_map()[3 * i + k] < 0) x_wall[i][k] = x_old_[i][k];
   move_mesh(x_wall);
-  Eigen::AlignedBox3d box;
-  for (const auto& p : x_wall) box.extend(p);
-  const double size = box.diagonal().norm();
-  CouplingReport report;
-  eta_ = 0.0;
-  regularized_iterations_ = 0;
-  try {
-    for (int iteration = 1; iteration <= options_.max_iterations && !report.converged;
-         ++iteration) {
-      report.iterations = iteration;
-      set_wall_velocities(x_wall, dt, inflow);
-      move_wall_nodes(x_wall);
-      const Eigen::VectorXd dz = newton_increment(dt, loads, x_wall, columns, rows);
-      const int wall_free = unknowns_->wall_free;
-      wall_.apply_increment(dz.head(wall_free), x_wall);
-      const double dp = apply_urine_increment(dz);
-      const double p_scale = std::max(
-          1.0, max_abs(state_(Eigen::seqN(3, state_.size() / kDofsPerNode, kDofsPerNode))));
-      report.converged = max_abs(dz.head(wall_free)) <= options_.position_tolerance * size &&
-                         dp <= options_.pressure_tolerance * p_scale;
-      vesica::log()->debug("coupled iteration {}: max |dx| {:.3e} m, max |dp| {:.3e} Pa", iteration,
-                           max_abs(dz.head(wall_free)), dp);
-    }
-    if (!report.converged)
-      report.failure =
-          "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
-  } catch (const std::exception& e) {
-    report.failure = e.what();
-  }
-  report.regularized_iterations = regularized_iterations_;
+  System system(*this, dt, loads, inflow, x_wall);
+  loop_.reset();  // each time step starts without foundation
+  NewtonReport report = loop_.solve(system);
   if (report.converged && min_radius_ratio(x_, mesh_.nodes, mesh_.tets) <= 0.0) {
     // A converged state with an inverted urine tetrahedron (the wall folded into the
     // urine) is not a solution: fail, so that the caller cuts the step back.
@@ -515,7 +508,7 @@ Eigen::VectorXd FluidWallCoupling::full_state() const {
   Eigen::VectorXd full = state_;
   const HydrostaticPressure h = hydrostatic_part();
   for (std::size_t i = 0; i < x_.size(); ++i) full[kDofsPerNode * i + 3] += h.at(x_[i]);
-  if (outlet_open_) full[unknowns_->problem.node_dof_count()] = outlet_pressure();
+  if (outlet_open()) full[unknowns_->problem.node_dof_count()] = outlet_pressure();
   return full;
 }
 
@@ -532,15 +525,14 @@ void FluidWallCoupling::set_hydrostatic_state(double p_ref, const Eigen::Vector3
   // p = p_ref + ρ g·(x − x_ref) = p̃ + ρ g·(x − x_h): p̃ is uniform.
   const double p_tilde = p_ref - hydrostatic_part().at(x_ref);
   for (std::size_t i = 0; i < x_.size(); ++i) state_[kDofsPerNode * i + 3] = p_tilde;
-  if (outlet_open_)
-    state_[unknowns_->problem.node_dof_count()] = patch_mean_pressure(outlet_.faces, x_, state_);
+  if (outlet_open())
+    state_[unknowns_->problem.node_dof_count()] = patch_mean_pressure(outlet_->faces, x_, state_);
   state_old_ = state_;
 }
 
 void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
   require_held_inner_nodes(wall_, outlet.faces, "outlet");
   outlet_ = outlet;
-  outlet_open_ = true;
   unknowns_ = std::make_unique<Unknowns>(mesh_, outlet_boundary(), fluid_);
   build_unknowns();
   const int last = unknowns_->problem.node_dof_count();
@@ -553,18 +545,21 @@ void FluidWallCoupling::open_outlet(const UrethraOutlet& outlet) {
 
 FluidBoundary FluidWallCoupling::outlet_boundary() const {
   FluidBoundary boundary;
-  if (!outlet_open_) return boundary;
+  if (!outlet_open()) return boundary;
   // The law is in the full pressure at the patch centroid; the unknown is p̃ there (the
   // patch is held, so its centroid never moves).
-  boundary.outlets.push_back(outlet_);
-  boundary.outlets[0].opening_pressure -= hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+  const UrethraLaw& law = outlet_->law;
+  boundary.outlets.push_back(
+      {outlet_->faces,
+       law.with_opening_pressure(law.opening_pressure() -
+                                 hydrostatic_part().at(patch_centroid(outlet_->faces, x_)))});
   return boundary;
 }
 
 double FluidWallCoupling::outflow() const {
-  if (!outlet_open_) return 0.0;
+  if (!outlet_open()) return 0.0;
   double q = 0.0;
-  for (const auto& f : outlet_.faces) {
+  for (const auto& f : outlet_->faces) {
     const Eigen::Vector3d m = corner_area_normal(f, x_);
     for (int v : f) q += state_.segment<3>(kDofsPerNode * v).dot(m);
   }
@@ -572,9 +567,9 @@ double FluidWallCoupling::outflow() const {
 }
 
 double FluidWallCoupling::outlet_pressure() const {
-  if (!outlet_open_) return 0.0;
+  if (!outlet_open()) return 0.0;
   return state_[unknowns_->problem.node_dof_count()] +
-         hydrostatic_part().at(patch_centroid(outlet_.faces, x_));
+         hydrostatic_part().at(patch_centroid(outlet_->faces, x_));
 }
 
 namespace {
@@ -606,9 +601,9 @@ int FluidWallCoupling::remesh(double max_size_mm) {
                                                     fresh.nodes.end());
   const std::vector<TetLocation> where = locate_points(x_, mesh_.tets, interior_nodes);
   const Eigen::VectorXd state =
-      transferred_state(state_, n_wall, fresh.nodes.size(), outlet_open_, mesh_.tets, where);
+      transferred_state(state_, n_wall, fresh.nodes.size(), outlet_open(), mesh_.tets, where);
   const Eigen::VectorXd state_old =
-      transferred_state(state_old_, n_wall, fresh.nodes.size(), outlet_open_, mesh_.tets, where);
+      transferred_state(state_old_, n_wall, fresh.nodes.size(), outlet_open(), mesh_.tets, where);
   // The new mesh is the reference from now on: the mesh motion's displacement is
   // x_wall − mesh_.nodes[wall], zero at the current wall, as it must be.
   mesh_ = std::move(fresh);

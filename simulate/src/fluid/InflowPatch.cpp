@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/InflowPatch.h"
+#include "fluid/InflowPatch.h"
 
 #include <map>
 #include <stdexcept>
@@ -27,6 +27,7 @@ std::vector<VelocityCondition> plug_inflow(const BoundaryFaces& boundary,
     }
   }
   std::vector<VelocityCondition> conditions;
+  conditions.reserve(direction.size());
   for (const auto& [node, d] : direction)
     conditions.push_back({node, {true, true, true}, flow_rate / unit_inflow * d});
   return conditions;

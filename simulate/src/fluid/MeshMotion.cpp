@@ -1,11 +1,11 @@
-#include "vesica/simulate/fluid/MeshMotion.h"
+#include "fluid/MeshMotion.h"
 
 #include <stdexcept>
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
-#include "vesica/simulate/fluid/StabilizedTet.h"
+#include "fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
 

@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/MeshTransfer.h"
+#include "fluid/MeshTransfer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -106,7 +106,7 @@ Eigen::VectorXd interpolate_field(const Eigen::VectorXd& field, int components,
     for (int a = 0; a < 4; ++a)
       out.segment(components * static_cast<Eigen::Index>(i), components) +=
           locations[i].weights[a] *
-          field.segment(components * tets[locations[i].tet][a], components);
+          field.segment(components * Eigen::Index{tets[locations[i].tet][a]}, components);
   return out;
 }
 

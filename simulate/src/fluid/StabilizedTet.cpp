@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/StabilizedTet.h"
+#include "fluid/StabilizedTet.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -78,7 +78,7 @@ void stabilized_tet(const TetState& s, const FluidProperties& fluid, double inve
     const Eigen::Vector4d c_dot_grad = dN * c;  // c·∇N_a
     const double p = N.dot(Eigen::Vector4d(s.p[0], s.p[1], s.p[2], s.p[3]));
 
-    for (int a = 0; a < 4; ++a) {
+    for (Eigen::Index a = 0; a < 4; ++a) {
       const Eigen::Vector3d dNa = dN.row(a).transpose();
       const Eigen::Vector3d r_a = N[a] * (inertia - rho * fluid.gravity) + two_mu_eps * dNa -
                                   p * dNa + tau_m * rho * c_dot_grad[a] * r_m + tau_c * div_u * dNa;
@@ -88,9 +88,9 @@ void stabilized_tet(const TetState& s, const FluidProperties& fluid, double inve
 
     if (!tangent) continue;
     TetMatrix& K = *tangent;
-    for (int a = 0; a < 4; ++a) {
+    for (Eigen::Index a = 0; a < 4; ++a) {
       const Eigen::Vector3d dNa = dN.row(a).transpose();
-      for (int b = 0; b < 4; ++b) {
+      for (Eigen::Index b = 0; b < 4; ++b) {
         const Eigen::Vector3d dNb = dN.row(b).transpose();
         // ∂r_M/∂u_b = ρ(N_b/Δt + c·∇N_b) I + ρ N_b G: both places u enters (c·∇)u. The
         // second (and every other term through c: τ, c·∇N_a) drops when the mesh

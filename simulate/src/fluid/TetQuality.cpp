@@ -1,4 +1,4 @@
-#include "vesica/simulate/fluid/TetQuality.h"
+#include "fluid/TetQuality.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-// Active detrusor fiber stress S_a = T_a(t) A / Ī4 along both families (physics.md §2).
-#include "vesica/simulate/DecoupledParts.h"
+// Active detrusor fiber stress S_a = T_a(t) A / Ī4 along both families (docs/physics.md §2).
+#include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {
 

@@ -1,4 +1,4 @@
-// Generalized Maxwell viscoelasticity on the isochoric stress (physics.md §2):
+// Generalized Maxwell viscoelasticity on the isochoric stress (docs/physics.md §2):
 //   ξ_α = exp(-Δt / (2 τ_α)),  Q_α,n+1 = ξ_α² Q_α,n + β_α ξ_α (S∞_n+1 - S∞_n),
 //   S = S_vol + S∞ + Σ Q_α,   D = D_vol + (1 + Σ β_α ξ_α) D∞,
 // with S∞ = S_iso (matrix, and fibers when present). With no branch it is the elastic

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "vesica/simulate/DecoupledParts.h"
+#include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {
 

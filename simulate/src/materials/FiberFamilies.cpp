@@ -1,7 +1,7 @@
-// Matrix + two exponential fiber families, tension only (physics.md §2).
+// Matrix + two exponential fiber families, tension only (docs/physics.md §2).
 #include <cmath>
 
-#include "vesica/simulate/DecoupledParts.h"
+#include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {
 

@@ -1,5 +1,5 @@
-// Isochoric neo-Hookean matrix (physics.md §2): S_iso = μ J^(-2/3)(I - (1/3) tr(C) C⁻¹).
-#include "vesica/simulate/DecoupledParts.h"
+// Isochoric neo-Hookean matrix (docs/physics.md §2): S_iso = μ J^(-2/3)(I - (1/3) tr(C) C⁻¹).
+#include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {
 

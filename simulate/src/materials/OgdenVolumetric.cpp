@@ -1,7 +1,7 @@
-// Ogden volumetric term and the shared decoupled kinematics (physics.md §2).
+// Ogden volumetric term and the shared decoupled kinematics (docs/physics.md §2).
 #include <cmath>
 
-#include "vesica/simulate/DecoupledParts.h"
+#include "materials/DecoupledParts.h"
 
 namespace vesica::simulate {
 

@@ -23,7 +23,7 @@ int main() {
   const double v0 = sim::enclosed_volume(wall, wall.nodes);
   const double r0 = std::cbrt(3.0 * v0 / (4.0 * pi));
 
-  sim::CystometryProtocol protocol;
+  sim::ProtocolSettings protocol;
   protocol.start_ml = units::ml_from_m3(v0);
   protocol.capacity_ml = 2.0 * protocol.start_ml;
   protocol.void_after_fill = false;

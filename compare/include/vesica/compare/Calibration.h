@@ -32,8 +32,8 @@ ParameterSpec parameter_spec(const std::string& name);
 
 struct CalibrationProblem {
   simulate::WallModel wall;
-  simulate::MaterialSpec material;        // start values (SI), fitted keys overwritten
-  simulate::CystometryProtocol protocol;  // start values, fitted keys overwritten
+  simulate::MaterialSpec material;      // start values (SI), fitted keys overwritten
+  simulate::ProtocolSettings protocol;  // start values, fitted keys overwritten
   simulate::RunOptions run;
   std::vector<ParameterSpec> parameters;
   Curve measured_filling;  // (volume ml, Pdet cmH2O)

@@ -12,7 +12,7 @@ namespace vesica::compare {
 // The level-1 model the calibration simulates (values at the start of the fit).
 struct CalibrationModel {
   double mu_kpa = 5.0;
-  double k_kpa = 0.0;  // 0: K = 1000 mu, following mu while it is fitted
+  double k_kpa = 0.0;  // 0 ("auto" on the command line): K = 1000 mu, following mu as it is fitted
   double thickness_mm = 3.0;
   double start_ml = 50.0;
 };

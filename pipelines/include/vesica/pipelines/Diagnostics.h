@@ -22,7 +22,7 @@ class Diagnostics {
   void add(SourcePos pos, std::string message);
   bool empty() const { return items_.empty(); }
   const std::vector<Diagnostic>& items() const { return items_; }
-  // One line per problem: "FILE:LINE:COL: problem".
+  // One line per problem, in file order: "FILE:LINE:COL: problem".
   std::string format(const std::string& file) const;
 
  private:

@@ -23,7 +23,8 @@ struct Param {
   std::string key;
   Kind kind = Kind::Value;
   std::string value;  // lists are already joined as a,b,c
-  SourcePos pos;
+  SourcePos pos;      // of the value
+  SourcePos key_pos;  // of the key (for a study: of its `stage.param` key)
 };
 
 struct StageSpec {

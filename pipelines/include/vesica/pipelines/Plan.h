@@ -31,6 +31,7 @@ struct Plan {
   std::filesystem::path file;
   std::filesystem::path workdir;  // absolute
   std::vector<PlannedStage> stages;
+  std::vector<std::string> unchecked_tools;  // tools without a parameter table: params unchecked
   std::string question;            // the study's design question (study.csv/.html)
   std::vector<StudyLimit> limits;  // and what answers it "pass"
 
@@ -48,7 +49,8 @@ struct PlanOptions {
   std::filesystem::path bin_dir;           // where vesica-<tool> executables live
 };
 
-// Checks tools, paths, external inputs, duplicate outputs and cycles; expands the study.
+// Checks parameters (ParameterCheck.h), tools, paths, external inputs, duplicate outputs and
+// cycles; expands the study.
 // On problems the diagnostics are filled and the plan should not be run.
 Plan build_plan(const PipelineSpec& spec, const PlanOptions& options, Diagnostics& diagnostics);
 

@@ -1,5 +1,5 @@
 #pragma once
-// The constitutive interface shared by every wall material (physics.md §2): a 3-D law
+// The constitutive interface shared by every wall material (docs/physics.md §2): a 3-D law
 // S(C) with its tangent, evaluated at one Gauss point. The membrane element enforces
 // plane stress on top of it (PlaneStress.h), so a material never knows it is a membrane.
 // Materials are built by name from a MaterialSpec through the registry

@@ -41,7 +41,7 @@ Eigen::Vector3d pressure_reference_point(const WallModel& wall, const Eigen::Vec
 std::size_t fix_regions(WallModel& wall, const Eigen::Vector3d& down, double patch_radius_m);
 
 // Scales the reference surface about its centroid so that it encloses volume_m3 (the
-// stress-free residual bladder, physics.md §7 / issue 7).
+// stress-free residual bladder, docs/physics.md §7 / issue 7).
 void scale_to_volume(WallModel& wall, double volume_m3);
 
 // Throws vesica::Error naming `source` when the surface is not closed and manifold

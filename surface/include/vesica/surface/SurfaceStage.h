@@ -33,12 +33,10 @@ struct SurfaceStageOptions {
 };
 
 // Builds, checks (throws vesica::Error naming the output when a check fails, before
-// writing), tags and writes the surface; fills record's summary, parameters, inputs,
-// outputs and timings.
+// writing), tags and writes the surface; fills record's summary, inputs, outputs and
+// timings, and adds the edge length used to its parameters (the options' values are the
+// parameter table's, SurfaceParameters.h).
 TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecord& record);
-
-// Every option's effective value, keyed by its pipeline-file name (for the manifest).
-nlohmann::json effective_parameters(const SurfaceStageOptions& options);
 
 // Summary numbers of a finished surface: volume, area, counts, quality, checks.
 nlohmann::json surface_summary(const TriangleSurface& surface, const SurfaceChecks& checks);

@@ -1,5 +1,6 @@
 #pragma once
-// The urine domain as linear tetrahedra and its boundary conditions. Positions in m.
+// The urine domain as linear tetrahedra (the input of a level-2 cystometry) and the layout
+// of the urine state on it (the fields written to fluid.pvd). Positions in m.
 // Unknowns are node-major: dof 4 i + k is velocity component k (m/s) of node i for
 // k < 3, and its pressure (Pa) for k = 3; with a urethra outlet, one more dof at the end:
 // the outlet pressure p_out (Pa).
@@ -15,51 +16,6 @@ struct FluidMesh {
   std::vector<std::array<int, 4>> tets;  // either orientation
 };
 
-// Velocity prescribed on some components of one node (no-slip: all three, zero).
-struct VelocityCondition {
-  int node = 0;
-  std::array<bool, 3> component{true, true, true};
-  Eigen::Vector3d value = Eigen::Vector3d::Zero();  // m/s
-};
-
-// A boundary triangle carrying the traction -p̄ n (n outward from the fluid).
-struct PressureFace {
-  std::array<int, 3> nodes{};  // any orientation; the outward side is found from the mesh
-  double pressure = 0.0;       // p̄, Pa
-};
-
-// The open urethra outlet (physics.md §5): traction −p n on the outlet faces with
-// p = p_out + ρ g·(x − x_ref) (p_out at the patch centroid x_ref, hydrostatic over the
-// patch), p_out one extra unknown (the last dof of the state) tied to the outflow
-// Q = ∫ u·n dA by
-// p_out − p_open = R1 Q + R2 Q|Q|. While the urethra is closed (filling, or p below
-// p_open) the caller treats the outlet faces as wall instead.
-struct UrethraOutlet {
-  std::vector<std::array<int, 3>> faces;
-  double opening_pressure = 0.0;  // p_open, Pa
-  double r1 = 0.0;                // R1, Pa·s/m³ (> 0)
-  double r2 = 0.0;                // R2, Pa·s²/m⁶
-};
-
-struct FluidBoundary {
-  std::vector<VelocityCondition> velocity;
-  std::vector<PressureFace> pressure_faces;
-  // Pressure of one node fixed (needed when no pressure face fixes the constant).
-  int pinned_pressure_node = -1;
-  double pinned_pressure = 0.0;        // Pa
-  std::vector<UrethraOutlet> outlets;  // at most one
-};
-
-// The moving (ALE) configuration of one time step: node positions at t_{n+1} (m) and
-// the mesh velocity (m/s), e.g. (x_{n+1} − x_n)/Δt from HarmonicMeshMotion.
-struct AleFrame {
-  std::vector<Eigen::Vector3d> positions;
-  std::vector<Eigen::Vector3d> mesh_velocity;
-  // Per node (empty = none): the mesh velocity is the node's own velocity unknown (the
-  // wall nodes of the coupled problem), which the tangent accounts for (StabilizedTet.h).
-  std::vector<bool> mesh_follows;
-};
-
-constexpr int kDofsPerNode = 4;
+constexpr Eigen::Index kDofsPerNode = 4;
 
 }  // namespace vesica::simulate::fluid

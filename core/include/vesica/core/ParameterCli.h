@@ -1,0 +1,21 @@
+#pragma once
+// A parameter table as command-line options: `--edge-mm NUMBER` for the entry edge_mm,
+// bare flags for flags, each with a help line that shows what it accepts and its default,
+// and a check of every given value (finite, in range, one of the choices) that refuses a
+// bad one with a usage error naming the option, the value and what is accepted (exit 2).
+// A hidden `--parameters-json` prints the table's description and exits 0.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "vesica/core/ParameterTable.h"
+
+namespace vesica {
+
+// The table must outlive the parse: options store into the fields it is bound to.
+void add_parameter_options(CLI::App& app, ParameterTable& table);
+
+// "edge length (accepts [0.5, 50] mm; default 4 mm)": one help line.
+std::string help_line(const Parameter& parameter);
+
+}  // namespace vesica

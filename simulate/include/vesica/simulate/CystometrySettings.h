@@ -1,0 +1,109 @@
+#pragma once
+// What a simulated cystometry does (ProtocolSettings: the clinical protocol and the
+// patient's surroundings, in the clinical units of a urodynamic report) and how it is
+// computed (RunOptions: the cavity model, step sizes, Newton, outputs). One set of
+// defaults for both levels; the level-2 (Navier–Stokes) extras are in RunOptions::level2.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "vesica/simulate/NewtonOptions.h"
+#include "vesica/simulate/WallLoading.h"
+
+namespace vesica::simulate {
+
+struct ProtocolSettings {
+  // Filling (docs/physics.md §7)
+  double start_ml = 50.0;
+  double capacity_ml = 350.0;
+  double fill_rate_ml_min = 50.0;
+  double hold_s = 0.0;
+  double pabd_cmh2o = 0.0;  // resting abdominal pressure on the outer wall
+  // Voiding (docs/physics.md §5): p_ves - p_open = R1 Q + R2 Q² for p_ves > p_open, else Q = 0
+  bool void_after_fill = true;
+  double p_open_cmh2o = 20.0;
+  double r1_cmh2o_s_per_ml = 0.2;
+  double r2_cmh2o_s2_per_ml2 = 0.05;
+  double detrusor_kpa = 0.0;       // peak active fiber stress T_a
+  double straining_kpa = 0.0;      // extra abdominal pressure while voiding
+  double activation_ramp_s = 2.0;  // ramp of detrusor activation and straining
+  double stop_flow_ml_s = 1.0;     // voiding ends when the flow falls below this
+  double max_void_s = 120.0;
+  // Environment
+  Posture posture = Posture::Supine;
+  bool gravity = true;            // hydrostatic urine pressure and wall weight
+  double urine_density = 1000.0;  // kg/m³
+  // Abdominal contents as a fluid at the same reference height: with the urine's density
+  // the transmural pressure has no hydrostatic gradient (Pabd is measured beside Pves);
+  // 0 = a bladder in air, whose low-pressure top is then in compression.
+  double abdominal_density = 1000.0;  // kg/m³
+  bool wall_weight = false;           // the wall's own weight (buoyant in the abdomen)
+  double wall_density = 920.0;        // kg/m³
+  double support_kpa_per_mm = 0.0;    // springs on the support region (kPa per mm)
+  // Viscous drag of the perivesical tissue on the wall (Pa·s/m): the drag pressure c·v is
+  // about 0.004 cmH2O at 50 ml/min, but it gives the slack wall of a scaled-down patient
+  // shape (excess area, no stiffness against unfolding) a unique position at every step.
+  double wall_drag_pa_s_per_m = 1e4;
+  // Tension-field wall (docs/physics.md §1): the membrane wrinkles instead of carrying
+  // compression, as a wall without bending stiffness must; false = the plain plane-stress
+  // law, compression included (which makes the slack collapse below the reference volume
+  // at the end of voiding slow and fragile).
+  bool wrinkling = true;
+  // Prestress reference: the imaged geometry is in equilibrium at this pressure.
+  double image_pressure_cmh2o = 10.0;
+};
+
+// Level 2: the urine as a Navier–Stokes flow on the tetrahedra of vesica-mesh --fluid,
+// solved together with the wall (docs/navier-stokes.md).
+struct Level2Options {
+  double fill_dt_s = 1.0;         // time step while filling and holding
+  double void_dt_s = 0.1;         // time step while voiding
+  double urine_viscosity = 1e-3;  // Pa·s
+  // The coupled wall–urine Newton (increment tests, 40 iterations, no line search).
+  NewtonOptions newton = coupled_newton_options();
+};
+
+struct RunOptions {
+  // 1: the urine as an enclosed volume with a hydrostatic pressure (seconds); 2: the urine
+  // as a Navier–Stokes flow on its tetrahedra (minutes; needs them, see run_cystometry).
+  int level = 1;
+  std::filesystem::path output_dir;  // empty: write no files (calibration)
+  bool filling_only = false;         // stop at capacity (and hold)
+  bool write_series = true;          // series.pvd + series/*.vtu when output_dir is set
+  // Frames while filling; while voiding every 1 s (level 1) or 0.5 s (level 2).
+  double series_interval_s = 10.0;
+  // Largest volume increment of a settling step (both levels) and of a level-1 filling
+  // step, whose steps then grow from half of it while Newton converges easily.
+  double max_fill_step_ml = 10.0;
+  double max_void_step_s = 0.5;    // level 1: longest voiding step (time resolution of the flow)
+  double max_void_step_ml = 10.0;  // level 1: largest volume voided by one step of a taut wall
+  int threads = 2;
+  // Level 1: Bossak–Newmark dynamics of the wall (docs/physics.md §3) instead of
+  // quasi-static steps; α_B ∈ [-1/3, 0] (0: no numerical damping).
+  bool dynamic = false;
+  double bossak_alpha = -0.1;
+  ReferenceState reference = ReferenceState::Scale;
+  // The wall-and-cavity Newton of level 1 (and of level 2's settling to the start volume).
+  // Chord iterations while the residual falls tenfold per iteration: fewer factorizations
+  // of the indefinite tangent, the same results to the Newton tolerance. Up to 25
+  // iterations before a step is cut back: on a slack, wrinkling wall Newton converges only
+  // linearly (elements switch between slack and taut), and a step cut back earlier wastes
+  // all its iterations. Converged at a residual of 1e-7 of the gross pressure force and a
+  // last increment of 1e-6 of the wall's size (sub-micrometre on a bladder): the
+  // defaults' extra digits cost many iterations of the slack collapse at the end of
+  // voiding and change no reported result.
+  NewtonOptions newton = [] {
+    NewtonOptions o;
+    o.reuse_tangent_ratio = 0.1;
+    o.max_iterations = 25;
+    o.residual_tolerance = 1e-7;
+    o.increment_tolerance = 1e-6;
+    return o;
+  }();
+  // Called after every step with what is being done ("filling 120 ml") and the fraction
+  // of the protocol done (filling up to 0.8, voiding after); the executable draws it.
+  std::function<void(const std::string& step, double fraction)> on_progress;
+  Level2Options level2;
+};
+
+}  // namespace vesica::simulate

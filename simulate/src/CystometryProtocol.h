@@ -1,0 +1,74 @@
+#pragma once
+// The cystometry protocol (docs/physics.md §7), run once over any cavity model
+// (CavityModel.h): settle to the start volume, fill at the infusion rate to capacity, hold,
+// then activate (detrusor contraction and abdominal straining ramped in) and void through
+// the urethra law (docs/physics.md §5) until the flow stops. It owns the clock, the
+// time-dependent loads, the infused and voided volumes, the history rows, the frames'
+// schedule, the cut-backs of failed steps (halving up to the model's limit) and the
+// summary; the model only steps and reports its state.
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "CavityModel.h"
+#include "UrethraLaw.h"
+#include "vesica/simulate/Cystometry.h"
+
+namespace vesica::simulate {
+
+class VtuSeriesWriter;
+
+class CystometryProtocol {
+ public:
+  // Keeps references to settings and options (validated: validate() in Cystometry.h).
+  CystometryProtocol(const ProtocolSettings& settings, const RunOptions& options);
+  ~CystometryProtocol();
+
+  // Runs the whole protocol on the model and writes the wall's series when options ask
+  // (history.csv is the caller's). A step that fails after cut-backs ends the run with
+  // completed = false and the history so far.
+  CystometryResult run(CavityModel& model);
+
+ private:
+  struct StepFailed : std::runtime_error {
+    using std::runtime_error::runtime_error;
+  };
+
+  void settle();
+  void fill();
+  void hold();
+  void void_bladder();
+  // Moves to volume V (m³) without time passing, halving the move on failure.
+  void step_to_volume(double volume_m3);
+  // One timed step of at most dt with inflow q_in (m³/s), the urethra open or closed,
+  // halving dt on failure; throws StepFailed after the model's cut-backs.
+  StepResult advance(double dt, double q_in, bool outlet);
+  // The next adaptive voiding step from the one just taken (dt, draining dV).
+  double next_void_step(double dt, double dV) const;
+  ProtocolLoads loads_at(double t) const;
+  void record();
+  void frame(bool force);
+  void take_notes();
+  void summarize(double seconds);
+
+  const ProtocolSettings& settings_;
+  const RunOptions& options_;
+  const UrethraLaw urethra_;
+  CavityModel* model_ = nullptr;
+  StepRules rules_;
+  std::unique_ptr<VtuSeriesWriter> series_;
+  CystometryResult result_;
+  double time_ = 0.0, t_void_ = -1.0;            // s; t_void_ < 0: not voiding yet
+  double infused_ = 0.0, voided_ = 0.0;          // since the start volume (m³)
+  double start_volume_ = 0.0;                    // at t = 0 (m³)
+  double mass_error_ = 0.0, max_stress_ = 0.0;   // relative; Pa
+  double next_frame_ = 0.0, last_frame_ = -1.0;  // s
+  double max_growth_ = 2.0;                      // of the next adaptive voiding step
+  std::size_t capacity_index_ = 0;               // the last filling (or hold) row
+  bool voiding_ = false, filled_ = false;
+  std::map<std::string, double> phase_seconds_;  // wall-clock time of settle, filling, voiding
+};
+
+}  // namespace vesica::simulate

@@ -1,0 +1,87 @@
+#pragma once
+// Building blocks of the decoupled (isochoric + volumetric) materials of docs/physics.md §2:
+// C̄ = J^(-2/3) C, and every isochoric energy written through invariants Ī = C̄ : M.
+#include <memory>
+
+#include <Eigen/Dense>
+
+#include "vesica/simulate/Material.h"
+#include "vesica/simulate/Voigt.h"
+
+namespace vesica::simulate {
+
+// C with what every decoupled law needs of it.
+struct Kinematics {
+  Eigen::Matrix3d C;
+  Eigen::Matrix3d C_inv;
+  double J = 1.0;      // sqrt(det C)
+  double J_m23 = 1.0;  // J^(-2/3)
+  explicit Kinematics(const Eigen::Matrix3d& C_);
+};
+
+// Ī = J^(-2/3) C : M with its first and second derivatives with respect to C:
+//   dĪ/dC   = J^(-2/3) M - (1/3) Ī C⁻¹
+//   d²Ī/dC² = -(1/3)(dĪ ⊗ C⁻¹ + C⁻¹ ⊗ dĪ) - (1/9) Ī C⁻¹ ⊗ C⁻¹ + (1/3) Ī C⁻¹ ⊙ C⁻¹
+struct IsochoricInvariant {
+  double value = 0.0;
+  Eigen::Matrix3d d_dC;
+  Voigt6 d2_dC2;
+};
+IsochoricInvariant isochoric_invariant(const Kinematics& k, const Eigen::Matrix3d& M);
+
+// An isochoric stress S_iso(C) and its tangent D_iso = 2 dS_iso/dC (Pa). It is the part
+// the Maxwell branches act on (S∞ of docs/physics.md §2).
+class IsochoricPart {
+ public:
+  virtual ~IsochoricPart() = default;
+  virtual void S_iso(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
+                     Voigt6& D) const = 0;
+  virtual bool isotropic() const { return false; }
+};
+
+// Ogden volumetric term Ψ_vol = K β⁻² (β ln J + J^(-β) - 1):
+//   S_vol = (K/β)(1 - J^(-β)) C⁻¹,
+//   D_vol = K J^(-β) C⁻¹ ⊗ C⁻¹ - 2 (K/β)(1 - J^(-β)) C⁻¹ ⊙ C⁻¹.
+class OgdenVolumetric {
+ public:
+  OgdenVolumetric(double K, double beta) : K_(K), beta_(beta) {}
+  void S_vol(const Kinematics& k, Eigen::Matrix3d& S, Voigt6& D) const;
+  double dPsi_vol_dJ(double J) const;
+
+ private:
+  double K_;
+  double beta_;
+};
+
+// Neo-Hookean matrix Ψ_iso = μ/2 (Ī1 - 3): S_iso = μ dĪ1/dC, D_iso = 2 μ d²Ī1/dC².
+class NeoHookeanIsochoric : public IsochoricPart {
+ public:
+  explicit NeoHookeanIsochoric(double mu) : mu_(mu) {}
+  void S_iso(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
+             Voigt6& D) const override;
+  bool isotropic() const override { return true; }
+
+ private:
+  double mu_;
+};
+
+// Neo-Hookean matrix plus two fiber families Ψ_f = k1/(2 k2)[exp(k2 (Ī4 - 1)²) - 1],
+// active only in tension (Ī4 > 1): S_f = 2 ψ' dĪ4/dC, D_f = 4 ψ'' dĪ4 ⊗ dĪ4 + 4 ψ' d²Ī4.
+class FiberFamilies : public IsochoricPart {
+ public:
+  FiberFamilies(double mu, double k1, double k2) : matrix_(mu), k1_(k1), k2_(k2) {}
+  void S_iso(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
+             Voigt6& D) const override;
+
+ private:
+  NeoHookeanIsochoric matrix_;
+  double k1_;
+  double k2_;
+};
+
+// Active detrusor stress along both fiber families, S_a = T_a A / Ī4 (docs/physics.md §2),
+// with D_a = 2 dS_a/dC = -2 T_a A ⊗ dĪ4 / Ī4² (not symmetric; UMFPACK copes).
+void add_active_fiber_stress(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
+                             Voigt6& D);
+
+}  // namespace vesica::simulate

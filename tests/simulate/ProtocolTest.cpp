@@ -1,0 +1,263 @@
+// The cystometry protocol over a third cavity model written here as one class: a 0-D
+// bladder of linear compliance C above its stress-free volume V_ref (docs/physics.md §7),
+//   Pves = Pabd + (V − V_ref) / C,
+// voiding through the urethra law by backward Euler. Its answers are analytic, so the
+// protocol's phases, loads, bookkeeping and cut-backs are checked against them:
+//  - filling at 1 ml/s from 50 to 150 ml in 1 s steps: infused = Q t, Pdet = (V − V_ref)/C
+//    on every row, 10 cmH2O at capacity (C = 10 ml/cmH2O); a hold of 5 s changes nothing;
+//  - passive voiding through p_open = 0, R1 = 1 cmH2O·s/ml, R2 = 0: V − V_ref decays by
+//    1 / (1 + Δt/τ) per step of Δt = 0.1 s, τ = R1 C = 10 s (within Δt/2τ of e^(−t/τ)),
+//    until the flow (V − V_ref)/τ falls below 0.5 ml/s, i.e. V − V_ref below 5 ml;
+//  - Pabd, straining and detrusor activation reach the model at each step's end, the last
+//    two ramped in over 2 s from the start of voiding;
+//  - steps longer than the model can take are halved (each step asks the fixed step, or
+//    what is left of the phase), and a run whose cut-backs are
+//    exhausted stops with the history so far and one line naming time and volume.
+// Mass balance V = V_start + infused − voided holds on every row.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "CavityModel.h"
+#include "CystometryProtocol.h"
+#include "vesica/simulate/SphereMesh.h"
+
+using namespace vesica::simulate;
+
+namespace {
+
+constexpr double kPaPerCmH2O = 98.0665, kM3PerMl = 1e-6, kPi = 3.14159265358979323846;
+
+struct LumpedOptions {
+  double reference_ml = 50.0;
+  double compliance_ml_per_cmh2o = 10.0;
+  double longest_step_s = 1e9;  // steps longer than this do not converge
+  int max_cutbacks = 12;
+};
+
+// The third model: a sphere-equivalent 0-D bladder. The whole class is what a new cavity
+// model needs.
+class LumpedBladder final : public CavityModel {
+ public:
+  explicit LumpedBladder(const LumpedOptions& o)
+      : o_(o),
+        wall_(sphere_wall(std::cbrt(3.0 * o.reference_ml * kM3PerMl / (4.0 * kPi)), 3e-3, 1)),
+        volume_(o.reference_ml * kM3PerMl) {}
+
+  StepRules rules() const override {
+    StepRules r;
+    r.max_cutbacks = o_.max_cutbacks;
+    r.fixed_fill_step_s = 1.0;
+    r.fixed_void_step_s = 0.1;
+    return r;
+  }
+
+  StepResult try_volume_step(double volume_m3, const ProtocolLoads& loads) override {
+    volume_ = volume_m3;
+    pabd_ = loads.pabd_pa;
+    return converged(0.0);
+  }
+
+  void start_clock() override { start_ = volume_; }
+
+  StepResult try_step(const StepRequest& step) override {
+    requests_.push_back(step);
+    if (step.dt_s > o_.longest_step_s) {
+      StepResult r;
+      r.failure = "step too long for the lumped bladder";
+      return r;
+    }
+    // Backward Euler: V = V_base − Δt Q(P(V)), V_base the protocol's volume with the
+    // infusion; Q(P(V)) grows with V, so the root is bracketed by [V_base − Δt Q(P(V_base)),
+    // V_base] and bisection finds it to round-off.
+    const double base = start_ + step.infused_m3 + step.dt_s * step.inflow_m3_s - step.voided_m3;
+    auto outflow = [&](double V) {
+      return step.urethra ? step.urethra->flow(pressure(V, step.loads.pabd_pa)) : 0.0;
+    };
+    double lo = base - step.dt_s * outflow(base), hi = base;
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * base; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (mid + step.dt_s * outflow(mid) > base ? hi : lo) = mid;
+    }
+    volume_ = 0.5 * (lo + hi);
+    pabd_ = step.loads.pabd_pa;
+    q_out_ = outflow(volume_);
+    return converged(step.dt_s * q_out_);
+  }
+
+  double volume() const override { return volume_; }
+  double pves() const override { return pressure(volume_, pabd_); }
+  double outflow() const override { return q_out_; }
+  double reference_volume() const override { return o_.reference_ml * kM3PerMl; }
+  const WallModel& wall() const override { return wall_; }
+  std::vector<Eigen::Vector3d> wall_positions() const override { return wall_.nodes; }
+  std::vector<MembraneStressOutput> wall_stresses() const override { return {}; }
+  nlohmann::json statistics() const override { return {{"steps", steps_}}; }
+  void add_summary(nlohmann::json& s) const override { s["model"] = "lumped"; }
+
+  const std::vector<StepRequest>& requests() const { return requests_; }
+
+ private:
+  double pressure(double V, double pabd) const {
+    const double C = o_.compliance_ml_per_cmh2o * kM3PerMl / kPaPerCmH2O;  // m³/Pa
+    return pabd + (V - reference_volume()) / C;
+  }
+  StepResult converged(double voided) {
+    ++steps_;
+    StepResult r;
+    r.converged = true;
+    r.iterations = 1;
+    r.voided_m3 = voided;
+    return r;
+  }
+
+  LumpedOptions o_;
+  WallModel wall_;
+  double volume_, start_ = 0.0, pabd_ = 0.0, q_out_ = 0.0;
+  int steps_ = 0;
+  std::vector<StepRequest> requests_;
+};
+
+ProtocolSettings lumped_protocol() {
+  ProtocolSettings p;
+  p.start_ml = 50.0;
+  p.capacity_ml = 150.0;
+  p.fill_rate_ml_min = 60.0;
+  p.hold_s = 5.0;
+  p.p_open_cmh2o = 0.0;
+  p.r1_cmh2o_s_per_ml = 1.0;
+  p.r2_cmh2o_s2_per_ml2 = 0.0;
+  p.stop_flow_ml_s = 0.5;
+  return p;
+}
+
+// Every row: V = V_start + infused − voided.
+void expect_mass_balance(const CystometryResult& r, double start_ml) {
+  for (const HistoryRow& row : r.history)
+    EXPECT_NEAR(row.volume_ml, start_ml + row.infused_ml - row.voided_ml, 1e-9)
+        << "t = " << row.time_s;
+}
+
+}  // namespace
+
+TEST(Protocol, ThirdCavityModelFillsHoldsAndVoidsAsItsAnalyticAnswer) {
+  const ProtocolSettings p = lumped_protocol();
+  const RunOptions o;
+  LumpedBladder model{LumpedOptions{}};
+  const CystometryResult r = CystometryProtocol(p, o).run(model);
+  ASSERT_TRUE(r.completed) << r.failure;
+  expect_mass_balance(r, 50.0);
+
+  // Filling: 100 steps of 1 s at 1 ml/s, Pdet on the compliance line.
+  const double tau = 10.0, t_capacity = 100.0, t_void = t_capacity + 5.0;
+  std::size_t capacity_row = 0;
+  for (std::size_t i = 0; i < r.history.size() && r.history[i].time_s <= t_void + 1e-9; ++i) {
+    const HistoryRow& row = r.history[i];
+    EXPECT_NEAR(row.infused_ml, std::min(row.time_s, t_capacity), 1e-9) << "t = " << row.time_s;
+    EXPECT_NEAR(row.pdet_cmh2o, (row.volume_ml - 50.0) / 10.0, 1e-9) << "t = " << row.time_s;
+    EXPECT_EQ(row.voided_ml, 0.0);
+    capacity_row = i;
+  }
+  EXPECT_EQ(capacity_row, 105u);  // the start row, 100 filling rows and 5 of the hold
+  EXPECT_NEAR(r.history[100].time_s, t_capacity, 1e-9);
+  EXPECT_NEAR(r.history[capacity_row].volume_ml, 150.0, 1e-9);
+  EXPECT_NEAR(r.summary["capacity_ml"].get<double>(), 150.0, 1e-9);
+  EXPECT_NEAR(r.summary["pdet_at_capacity_cmh2o"].get<double>(), 10.0, 1e-9);
+  EXPECT_NEAR(r.summary["compliance_ml_per_cmh2o"].get<double>(), 10.0, 1e-9);
+
+  // Voiding: the discrete decay of backward Euler, close to the exponential.
+  const double dt = 0.1, factor = 1.0 / (1.0 + dt / tau);
+  int steps = 0;
+  for (std::size_t i = capacity_row + 1; i < r.history.size(); ++i) {
+    const HistoryRow& row = r.history[i];
+    ++steps;
+    const double excess = 100.0 * std::pow(factor, steps);
+    EXPECT_NEAR(row.time_s, t_void + steps * dt, 1e-9);
+    EXPECT_NEAR(row.volume_ml - 50.0, excess, 1e-9 * 100.0) << "t = " << row.time_s;
+    EXPECT_NEAR(row.flow_ml_s, excess / tau, 1e-9) << "t = " << row.time_s;
+    EXPECT_NEAR(excess, 100.0 * std::exp(-steps * dt / tau), 100.0 * dt / (2.0 * tau));
+  }
+  // It stops at the first row below 0.5 ml/s: V − V_ref below 5 ml.
+  const int expected_steps = static_cast<int>(std::ceil(std::log(20.0) / -std::log(factor)));
+  EXPECT_EQ(steps, expected_steps);
+  EXPECT_LT(r.history.back().flow_ml_s, 0.5);
+  EXPECT_GE(r.history[r.history.size() - 2].flow_ml_s, 0.5);
+  EXPECT_NEAR(r.summary["voided_ml"].get<double>() + r.summary["pvr_ml"].get<double>(), 150.0,
+              1e-9);
+  EXPECT_LT(r.summary["mass_balance_error_max_rel"].get<double>(), 1e-12);
+  // The model's own summary and statistics reach the summary.
+  EXPECT_EQ(r.summary["model"], "lumped");
+  EXPECT_EQ(r.summary["newton"]["steps"].get<int>(), 100 + 5 + steps + 1);  // + the settle
+  EXPECT_EQ(r.summary["triangles"].get<int>(), 8);
+}
+
+TEST(Protocol, StrainingAndDetrusorRampInFromTheStartOfVoiding) {
+  ProtocolSettings p = lumped_protocol();
+  p.capacity_ml = 60.0;
+  p.hold_s = 0.0;
+  p.pabd_cmh2o = 5.0;
+  p.straining_kpa = 0.5;
+  p.detrusor_kpa = 30.0;
+  p.activation_ramp_s = 2.0;
+  p.max_void_s = 3.0;
+  p.stop_flow_ml_s = 1e-6;
+  LumpedBladder model{LumpedOptions{}};
+  const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+  ASSERT_TRUE(r.completed) << r.failure;
+  expect_mass_balance(r, 50.0);
+  const double t_void = 10.0;
+  auto ramp = [&](double t) { return std::clamp((t - t_void) / 2.0, 0.0, 1.0); };
+  for (const HistoryRow& row : r.history) {
+    const double straining_cmh2o = 500.0 / kPaPerCmH2O * ramp(row.time_s);
+    EXPECT_NEAR(row.pabd_cmh2o, 5.0 + straining_cmh2o, 1e-9) << "t = " << row.time_s;
+    EXPECT_NEAR(row.pdet_cmh2o, row.pves_cmh2o - row.pabd_cmh2o, 1e-12);
+  }
+  // Each step is asked with the loads at its end.
+  for (const StepRequest& s : model.requests()) {
+    const double a = ramp(s.end_time_s);
+    EXPECT_NEAR(s.loads.pabd_pa, 5.0 * kPaPerCmH2O + 500.0 * a, 1e-9) << s.end_time_s;
+    EXPECT_NEAR(s.loads.active_stress_pa, 30000.0 * a, 1e-9) << s.end_time_s;
+    EXPECT_EQ(s.urethra != nullptr, s.end_time_s > t_void + 1e-9) << s.end_time_s;
+  }
+  // Voiding lasts max_void_s (to the step that reaches it).
+  EXPECT_GT(r.history.back().time_s - t_void, 3.0 - 1e-9);
+  EXPECT_LT(r.history.back().time_s - t_void, 3.1 + 1e-9);
+}
+
+TEST(Protocol, TooLongStepsAreHalvedUntilTheModelConverges) {
+  ProtocolSettings p = lumped_protocol();
+  p.void_after_fill = false;
+  p.hold_s = 0.0;
+  LumpedOptions lumped;
+  lumped.longest_step_s = 0.6;  // 1 s fails, 0.5 s converges
+  LumpedBladder model(lumped);
+  const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+  ASSERT_TRUE(r.completed) << r.failure;
+  expect_mass_balance(r, 50.0);
+  // 100 s of filling in steps of 0.5 s, each after one failed attempt of 1 s but the last,
+  // which asks only the 0.5 s left.
+  ASSERT_EQ(r.history.size(), 1u + 200u);
+  for (std::size_t i = 1; i < r.history.size(); ++i)
+    EXPECT_NEAR(r.history[i].time_s - r.history[i - 1].time_s, 0.5, 1e-9);
+  EXPECT_EQ(model.requests().size(), 2u * 199u + 1u);
+  EXPECT_NEAR(r.summary["capacity_ml"].get<double>(), 150.0, 1e-9);
+}
+
+TEST(Protocol, ExhaustedCutBacksEndTheRunWithTheHistorySoFar) {
+  const ProtocolSettings p = lumped_protocol();
+  LumpedOptions lumped;
+  lumped.longest_step_s = 0.3;
+  lumped.max_cutbacks = 1;  // 1 s and 0.5 s: both fail
+  LumpedBladder model(lumped);
+  const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+  EXPECT_FALSE(r.completed);
+  ASSERT_EQ(r.history.size(), 1u);  // the start row
+  EXPECT_EQ(r.failure,
+            "step failed at t = 0 s, V = 50 ml: step too long for the lumped bladder after 1 "
+            "step cut-backs");
+  EXPECT_EQ(r.summary["failure"], r.failure);
+  EXPECT_FALSE(r.summary["completed"].get<bool>());
+}

@@ -1,0 +1,91 @@
+// The urethra law p − p_open = R1 Q + R2 Q² (docs/physics.md §5) against a table worked by
+// hand for p_open = 20 cmH2O, R1 = 0.2 cmH2O·s/ml, R2 = 0.05 cmH2O·s²/ml²: a pressure
+// p above p_open gives Q² + 4 Q − 20 (p − 20) = 0, so Q = −2 + √(4 + 20 (p − 20)) ml/s, and
+// dQ/dp = 1 / (R1 + 2 R2 Q) ml/s per cmH2O:
+//   p = 20.25 → Q = −2 + √9   = 1 ml/s,               dQ/dp = 1 / 0.3       = 3.33333…
+//   p = 30    → Q = −2 + √204 = 12.2828568570857 ml/s, dQ/dp = 1 / 1.42828… = 0.700140…
+//   p = 40    → Q = −2 + √404 = 18.0997512422418 ml/s, dQ/dp = 1 / 2.00997… = 0.497519…
+// and no flow at or below p_open. The law works in SI; the table is in clinical units.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "UrethraLaw.h"
+
+using vesica::simulate::UrethraLaw;
+
+namespace {
+
+constexpr double kPaPerCmH2O = 98.0665, kM3PerMl = 1e-6;
+
+double ml_s(double m3_s) {
+  return m3_s / kM3PerMl;
+}
+double pa(double cmh2o) {
+  return cmh2o * kPaPerCmH2O;
+}
+// dQ/dp from m³/(s·Pa) to ml/s per cmH2O.
+double ml_s_per_cmh2o(double si) {
+  return si * kPaPerCmH2O / kM3PerMl;
+}
+
+const UrethraLaw& clinical_law() {
+  static const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 0.2, 0.05);
+  return law;
+}
+
+}  // namespace
+
+TEST(UrethraLaw, FlowMatchesTheHandWorkedTable) {
+  const UrethraLaw& law = clinical_law();
+  EXPECT_NEAR(law.opening_pressure(), pa(20.0), 1e-12);
+  EXPECT_NEAR(ml_s(law.flow(pa(20.25))), 1.0, 1e-12);
+  EXPECT_NEAR(ml_s(law.flow(pa(30.0))), 12.2828568570857, 1e-11);
+  EXPECT_NEAR(ml_s(law.flow(pa(40.0))), 18.0997512422418, 1e-11);
+  EXPECT_NEAR(ml_s_per_cmh2o(law.flow_derivative(pa(20.25))), 1.0 / 0.3, 1e-12);
+  EXPECT_NEAR(ml_s_per_cmh2o(law.flow_derivative(pa(30.0))), 1.0 / (0.2 + 0.1 * 12.2828568570857),
+              1e-12);
+  EXPECT_NEAR(ml_s_per_cmh2o(law.flow_derivative(pa(40.0))), 1.0 / (0.2 + 0.1 * 18.0997512422418),
+              1e-12);
+}
+
+TEST(UrethraLaw, NoFlowUntilTheUrethraOpens) {
+  const UrethraLaw& law = clinical_law();
+  for (double p_cmh2o : {-5.0, 0.0, 10.0, 20.0}) {
+    EXPECT_EQ(law.flow(pa(p_cmh2o)), 0.0) << p_cmh2o;
+    EXPECT_EQ(law.flow_derivative(pa(p_cmh2o)), 0.0) << p_cmh2o;
+  }
+}
+
+// The pressure form of level 2 and the flow form of level 1 are the same law: the pressure
+// drop of 1 ml/s is 0.2 + 0.05 = 0.25 cmH2O, of a 1 ml/s backflow −0.25 cmH2O.
+TEST(UrethraLaw, PressureFormInvertsTheFlowForm) {
+  const UrethraLaw& law = clinical_law();
+  EXPECT_NEAR(law.pressure_drop(1.0 * kM3PerMl) / kPaPerCmH2O, 0.25, 1e-12);
+  EXPECT_NEAR(law.pressure_drop(-1.0 * kM3PerMl) / kPaPerCmH2O, -0.25, 1e-12);
+  EXPECT_NEAR(law.pressure_drop_derivative(1.0 * kM3PerMl) * kM3PerMl / kPaPerCmH2O, 0.3, 1e-12);
+  for (double p_cmh2o : {20.25, 30.0, 40.0}) {
+    const double q = law.flow(pa(p_cmh2o));
+    EXPECT_NEAR(law.opening_pressure() + law.pressure_drop(q), pa(p_cmh2o), 1e-9) << p_cmh2o;
+  }
+}
+
+// Without the quadratic term the law is Ohm's: Q = (p − p_open) / R1 = 10 / 0.5 = 20 ml/s.
+TEST(UrethraLaw, LinearLawIsOhmic) {
+  const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 0.5, 0.0);
+  EXPECT_NEAR(ml_s(law.flow(pa(30.0))), 20.0, 1e-12);
+  EXPECT_NEAR(ml_s_per_cmh2o(law.flow_derivative(pa(30.0))), 2.0, 1e-12);
+}
+
+// A resistance of zero is raised to 1e-6 cmH2O·s/ml, where dQ/dp stays finite at p_open.
+TEST(UrethraLaw, ZeroLinearResistanceKeepsAFiniteSlope) {
+  const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 0.0, 0.05);
+  EXPECT_NEAR(law.r1() * kM3PerMl / kPaPerCmH2O, 1e-6, 1e-18);
+  EXPECT_TRUE(std::isfinite(law.flow_derivative(pa(20.0) + 1e-9)));
+}
+
+TEST(UrethraLaw, NonPositiveResistanceIsRefused) {
+  EXPECT_THROW(UrethraLaw(0.0, 0.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(UrethraLaw(0.0, 1.0, -1.0), std::invalid_argument);
+}
