@@ -11,6 +11,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "vesica/phantom/PhantomParameters.h"
+#include "vesica/pipelines/StageTables.h"
+
 namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
@@ -19,7 +22,7 @@ namespace {
 // Each stage's cost model: the coefficients are fitted to the stage's measured time and
 // peak memory at two or more sizes (docs/benchmarks.md and docs/pipeline-file.md, "Cluster
 // resources"), with the exponent of its growth with the mesh. Defaults of parameters a
-// pipeline file leaves out are the stage's own (its --help).
+// pipeline file leaves out are the stage's own, from its parameter table (table_default).
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTimeHeadroom = 3.0;    // a slower or busier node, the model's error
 constexpr double kMemoryHeadroom = 2.0;  // allocator slack, a larger mesh than estimated
@@ -47,6 +50,20 @@ double number(const PlannedStage& s, const std::string& key, double fallback) {
   }
 }
 
+// The stage's own default of a numeric parameter (its parameter table), for parameters a
+// pipeline file leaves out; `fallback` for a tool without a table or a non-numeric entry.
+double table_default(const PlannedStage& s, const std::string& key, double fallback) {
+  const std::optional<ParameterTable> table = stage_table(s.tool);
+  const Parameter* entry = table ? table->find(key) : nullptr;
+  if (!entry || !entry->default_value.is_number()) return fallback;
+  return entry->default_value.get<double>();
+}
+
+// A numeric parameter as the pipeline file gives it, else the stage's default.
+double number(const PlannedStage& s, const std::string& key) {
+  return number(s, key, table_default(s, key, 0.0));
+}
+
 bool flag(const PlannedStage& s, const std::string& key) {
   const Param* p = find_param(s, key);
   return p && p->kind == Param::Kind::Flag;
@@ -57,24 +74,29 @@ bool given(const PlannedStage& s, const std::string& key) {
   return p && p->kind == Param::Kind::Value && !p->value.empty();
 }
 
-// "400,400,240" -> their product, or `fallback` unless all three are numbers.
-double product_of_list(const PlannedStage& s, const std::string& key, double fallback) {
-  const Param* p = find_param(s, key);
-  if (!p || p->kind != Param::Kind::Value) return fallback;
-  double product = 1.0;
-  int count = 0;
-  std::size_t at = 0;
-  try {
-    while (at <= p->value.size()) {
-      const std::size_t comma = std::min(p->value.find(',', at), p->value.size());
-      product *= std::stod(p->value.substr(at, comma - at));
-      ++count;
-      at = comma + 1;
+// The stage's params assigned to `table`, which is bound to settings holding the stage's
+// own defaults: what the stage will run with. A value the table refuses leaves the
+// default (`vesica validate` reports it).
+void apply_params(const PlannedStage& s, ParameterTable& table) {
+  for (const Param& p : s.params)
+    for (Parameter& entry : table.entries()) {
+      if (entry.name != p.key) continue;
+      try {
+        if (p.kind == Param::Kind::Value)
+          entry.assign(p.value);
+        else if (entry.kind == Parameter::Kind::Flag)
+          entry.assign(p.kind == Param::Kind::Flag ? "true" : "false");
+      } catch (const ParameterValueError&) {
+      }
     }
-  } catch (const std::exception&) {
-    return fallback;
-  }
-  return count == 3 ? product : fallback;
+}
+
+// The phantom a phantom stage makes.
+segment::PhantomSpec phantom_of(const PlannedStage& s) {
+  phantom::PhantomSettings settings;
+  ParameterTable table = phantom::parameter_table(settings);
+  apply_params(s, table);
+  return phantom::phantom_spec(settings);
 }
 
 // ---- where the sizes come from ----
@@ -111,11 +133,8 @@ std::string count(double n) {
 // Voxels of the image a segmentation reads: the phantom's grid, else the input's bytes
 // (16-bit voxels; a .gz compresses a CT about fourfold), else a CT of unknown size.
 double image_voxels(const Plan& plan, std::size_t index) {
-  if (const long ph = nearest_upstream(plan, index, "phantom"); ph >= 0) {
-    const PlannedStage& p = plan.stages[static_cast<std::size_t>(ph)];
-    const double spacing = number(p, "spacing_mm", 2.0);
-    return product_of_list(p, "fov_mm", 400.0 * 400.0 * 240.0) / (spacing * spacing * spacing);
-  }
+  if (const long ph = nearest_upstream(plan, index, "phantom"); ph >= 0)
+    return segment::phantom_voxel_count(phantom_of(plan.stages[static_cast<std::size_t>(ph)]));
   const long seg = nearest_upstream(plan, index, "segment");
   if (seg < 0 || plan.stages[static_cast<std::size_t>(seg)].inputs.empty()) return kCtVoxels;
   const fs::path input = plan.in_workdir(plan.stages[static_cast<std::size_t>(seg)].inputs.front());
@@ -157,7 +176,7 @@ MeshSize mesh_size_for(const Plan& plan, std::size_t index) {
     if (given(s, "shape"))
       volume_ml = number(s, "volume_ml", 300.0);
     else if (const long ph = nearest_upstream(plan, index, "phantom"); ph >= 0)
-      volume_ml = number(plan.stages[static_cast<std::size_t>(ph)], "bladder_ml", 300.0);
+      volume_ml = phantom_of(plan.stages[static_cast<std::size_t>(ph)]).bladder_ml;
     // Isotropic remeshing to edge h leaves a closed surface of area A with about 2.8 A / h²
     // triangles (their mean edge comes out a little shorter than the target); the sphere's
     // area is the least a surface of that volume can have.
@@ -196,8 +215,9 @@ struct Cost {
 
 Cost phantom_cost(const Plan& plan, std::size_t i) {
   const double voxels = image_voxels(plan, i);
+  const bool mr = phantom_of(plan.stages[i]).modality == segment::Modality::MR;
   return {1, 1.0 + 0.5e-6 * voxels, 30.0 + 5e-6 * voxels,
-          "synthetic CT of " + count(voxels) + " voxels"};
+          std::string(mr ? "synthetic MR of " : "synthetic CT of ") + count(voxels) + " voxels"};
 }
 
 // ITK's filters run in threads; two keep a shared node's other jobs their cores.
@@ -239,7 +259,7 @@ double level1_mb(double triangles) {
 // simulated time over the time step; voiding steps are shorter and their Newton harder.
 double level2_seconds(const PlannedStage& s, double tetrahedra, double fill_s, double void_s) {
   const double scale = std::pow(std::max(tetrahedra, 1.0) / 22205.0, 1.3);
-  const double fill_dt = number(s, "fluid_dt_s", 1.0), void_dt = number(s, "void_dt_s", 0.1);
+  const double fill_dt = number(s, "fluid_dt_s"), void_dt = number(s, "void_dt_s");
   return 10.0 + scale * (6.0 * fill_s / fill_dt + 3.7 * void_s / void_dt);
 }
 
@@ -251,16 +271,15 @@ double level2_mb(double tetrahedra) {
 Cost simulate_cost(const Plan& plan, std::size_t i) {
   const PlannedStage& s = plan.stages[i];
   const MeshSize size = mesh_size_for(plan, i);
-  const double start = number(s, "start_ml", 50.0), capacity = number(s, "capacity_ml", 350.0);
+  const double start = number(s, "start_ml"), capacity = number(s, "capacity_ml");
   const double fill_ml = std::max(capacity - start, 0.0);
   const bool voids = !flag(s, "no_void");
   const std::string protocol =
       fmt::format("{:g} -> {:g} ml{}", start, capacity, voids ? " and voiding" : "");
-  if (number(s, "level", 1.0) >= 2.0) {
-    const double fill_s =
-        fill_ml / number(s, "fill_rate_ml_min", 50.0) * 60.0 + number(s, "hold_s", 0.0);
+  if (number(s, "level") >= 2.0) {
+    const double fill_s = fill_ml / number(s, "fill_rate_ml_min") * 60.0 + number(s, "hold_s");
     // Voiding ends when the flow stops: about the capacity at a mean 10 ml/s.
-    const double void_s = voids ? std::min(number(s, "max_void_s", 120.0), capacity / 10.0) : 0.0;
+    const double void_s = voids ? std::min(number(s, "max_void_s"), capacity / 10.0) : 0.0;
     return {2, level2_seconds(s, size.tetrahedra, fill_s, void_s), level2_mb(size.tetrahedra),
             "level-2 cystometry " + protocol + " on " + size.basis};
   }
@@ -273,8 +292,8 @@ Cost compare_cost(const Plan& plan, std::size_t i) {
   const PlannedStage& s = plan.stages[i];
   if (!given(s, "calibrate")) return {1, 5.0, 200.0, "report"};
   const MeshSize size = mesh_size_for(plan, i);
-  const double runs = number(s, "max_simulations", 40.0);
-  const double fill_ml = std::max(350.0 - number(s, "start_ml", 50.0), 0.0);
+  const double runs = number(s, "max_simulations");
+  const double fill_ml = std::max(350.0 - number(s, "start_ml"), 0.0);
   return {2, runs * level1_seconds(size.triangles, fill_ml, false), level1_mb(size.triangles),
           "calibration, up to " + count(runs) + " fillings on " + size.basis};
 }

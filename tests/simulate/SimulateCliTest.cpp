@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "ShellCommand.h"
@@ -32,7 +33,52 @@ TEST(SimulateCli, NoInfusionIsAOneLineUsageErrorAtBothLevels) {
     EXPECT_EQ(r.exit_code, 2) << "level " << level << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1)
         << "level " << level << ": " << r.output;
-    EXPECT_NE(r.output.find("fill_rate_ml_min must be > 0"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--fill-rate-ml-min 0 is outside [1, 500] ml/min: at 0 filling never "
+                            "ends"),
+              std::string::npos)
+        << r.output;
     EXPECT_FALSE(fs::exists(out)) << "level " << level << " wrote " << out;
   }
+}
+
+// Values no run can use are refused before the mesh is read, each naming its option: a
+// shear modulus whose wall never moves (1e30 kPa livelocked Newton), an hour-long hold (1e30 s
+// filled the disk with frames), K = 0 (it used to mean "auto"), negative resistances,
+// stresses, springs and pressures.
+TEST(SimulateCli, OutOfRangeOptionsAreRefusedNamingTheOption) {
+  const fs::path dir = scratch_dir("simulate-cli-ranges");
+  const std::string bin = bin_dir().string();
+  for (const std::string option :
+       {"--mu-kpa 1e30", "--hold-s 1e30", "--k-kpa 0", "--r1 -0.1", "--detrusor-kpa -5",
+        "--support-kpa-per-mm -1", "--p-open-cmh2o -20"}) {
+    const CommandResult r = run_command(bin + "/vesica-simulate missing.vtu -o " +
+                                        (dir / "out").string() + " " + option);
+    EXPECT_EQ(r.exit_code, 2) << option << ": " << r.output;
+    const std::string name = option.substr(0, option.find(' '));
+    EXPECT_NE(r.output.find("usage error: " + option + " is outside"), std::string::npos)
+        << option << ": " << r.output;
+    EXPECT_EQ(r.output.find("missing.vtu"), std::string::npos) << "read the mesh: " << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out")) << name;
+  }
+}
+
+// A pipeline file's simulate params are checked against the same table before any stage
+// runs: a misspelt key is named at its line and column with the key meant.
+TEST(SimulateCli, MisspeltPipelineKeyIsFoundByValidateWithTheKeyMeant) {
+  const fs::path dir = scratch_dir("simulate-cli-validate");
+  {
+    std::ofstream yaml(dir / "pipe.yaml");
+    yaml << "pipeline: p\n"
+            "stages:\n"
+            "  surface: {output: s.vtp, params: {shape: sphere}}\n"
+            "  mesh: {input: s.vtp, output: s.msh}\n"
+            "  simulate: {input: s.msh, output: sim, params: {mu_kp: 3}}\n";
+  }
+  const CommandResult r =
+      run_command(bin_dir().string() + "/vesica validate " + (dir / "pipe.yaml").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("pipe.yaml:5:50: unknown parameter 'mu_kp' for simulate (did you "
+                          "mean 'mu_kpa'?)"),
+            std::string::npos)
+      << r.output;
 }
