@@ -55,11 +55,22 @@ fs::path find_manifest(const fs::path& history) {
   return {};
 }
 
-void read_material(const nlohmann::json& material, SimulationSettings& s) {
-  s.material = material.value("name", "");
-  if (!material.contains("params_si")) return;
-  const nlohmann::json& p = material["params_si"];
-  for (auto it = p.begin(); it != p.end(); ++it) {
+// The material's name and SI parameters: "material_si" {name, params} beside the table's
+// "material" word, or (manifests before simulate's parameter table) "material" {name,
+// params_si}.
+void read_material(const nlohmann::json& p, SimulationSettings& s) {
+  nlohmann::json si;
+  if (p.contains("material_si") && p["material_si"].is_object()) {
+    s.material = p["material_si"].value("name", "");
+    si = p["material_si"].value("params", nlohmann::json::object());
+  } else if (p.contains("material") && p["material"].is_object()) {
+    s.material = p["material"].value("name", "");
+    si = p["material"].value("params_si", nlohmann::json::object());
+  } else if (p.contains("material") && p["material"].is_string()) {
+    s.material = p["material"].get<std::string>();
+  }
+  if (!si.is_object()) return;
+  for (auto it = si.begin(); it != si.end(); ++it) {
     if (!it.value().is_number()) continue;
     const double v = it.value().get<double>();
     const std::string& k = it.key();
@@ -71,6 +82,19 @@ void read_material(const nlohmann::json& material, SimulationSettings& s) {
     else
       s.material_parameters.emplace_back(k, short_number(v));
   }
+}
+
+// The mesh the simulation read: the "mesh" parameter of older manifests, else the input.
+std::string mesh_of(const nlohmann::json& m, const nlohmann::json& p) {
+  if (p.contains("mesh") && p["mesh"].is_string()) return p["mesh"].get<std::string>();
+  if (!m.contains("inputs") || !m["inputs"].is_array()) return "";
+  for (const auto& in : m["inputs"])
+    if (in.is_object() && in.contains("path") && in["path"].is_string()) {
+      const std::string path = in["path"].get<std::string>();
+      const std::string ext = fs::path(path).extension().string();
+      if (ext == ".msh" || ext == ".vtu") return path;
+    }
+  return "";
 }
 
 // Thickness and edge length of the mesh the simulation read (.msh: the .vtu beside it).
@@ -136,7 +160,7 @@ SimulationSettings read_simulation_settings(const fs::path& history) {
   const nlohmann::json p = m.value("parameters", nlohmann::json::object());
   s.finished_utc = m.value("finished_utc", "");
   if (s.version.empty()) s.version = m.value("version", "");
-  if (p.contains("material")) read_material(p["material"], s);
+  read_material(p, s);
   s.residual_ml = number(p, "residual_ml");
   s.start_ml = number(p, "start_ml");
   s.capacity_ml = number(p, "capacity_ml");
@@ -147,8 +171,8 @@ SimulationSettings read_simulation_settings(const fs::path& history) {
   if (!s.p_open_cmh2o) s.p_open_cmh2o = number(p, "p_open_cmh2o");
   if (!s.r1_cmh2o_s_per_ml) s.r1_cmh2o_s_per_ml = number(p, "r1");
   if (!s.r2_cmh2o_s2_per_ml2) s.r2_cmh2o_s2_per_ml2 = number(p, "r2");
-  if (p.contains("mesh") && p["mesh"].is_string())
-    read_mesh(s.manifest.parent_path(), p["mesh"].get<std::string>(), s);
+  if (const std::string mesh = mesh_of(m, p); !mesh.empty())
+    read_mesh(s.manifest.parent_path(), mesh, s);
   read_invocation_thickness(m.value("invocation", nlohmann::json()), s);
   return s;
 }

@@ -117,7 +117,8 @@ TEST(ReportContent, FillRateAndStartOfFillingFromTheInfusedVolume) {
 
 TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
   // A history voided by straining: Pabd 4 -> 44 cmH2O, Pdet falling below zero at the end,
-  // beside the summary.json and manifest vesica-simulate would leave.
+  // beside the summary.json and manifest vesica-simulate leaves (parameters from its table,
+  // the material's SI parameters in material_si).
   const fs::path dir = scratch_dir("compare-content-straining");
   fs::create_directories(dir / "sim");
   {
@@ -140,15 +141,16 @@ TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
       {"outputs",
        {{{"path", "sim/history.csv"}, {"hash", vesica::content_hash(dir / "sim/history.csv")}}}},
       {"parameters",
-       {{"material",
-         {{"name", "neo-hookean"}, {"params_si", {{"mu", 3000.0}, {"K_per_mu", 1000.0}}}}},
+       {{"material", "neo-hookean"},
+        {"material_si",
+         {{"name", "neo-hookean"}, {"params", {{"mu", 3000.0}, {"K_per_mu", 1000.0}}}}},
         {"start_ml", 50.0},
         {"capacity_ml", 350.0},
         {"fill_rate_ml_min", 50.0},
         {"straining_kpa", 4.0},
         {"detrusor_kpa", 0.0},
-        {"level", 1},
-        {"mesh", "missing.msh"}}},
+        {"level", 1}}},
+      {"inputs", {{{"path", "missing.msh"}}}},
       {"invocation", {"missing.msh", "-o", "sim", "--thickness-mm", "3"}}};
   std::ofstream(dir / "simulate.manifest.json") << manifest.dump(2);
 
