@@ -155,6 +155,14 @@ SvgPlot& SvgPlot::add_box(double x0, double x1, double y0, double y1, const std:
   return *this;
 }
 
+double SvgPlot::series_top() const {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const auto& s : series_)
+    for (double v : s.y)
+      if (std::isfinite(v)) top = std::max(top, v);
+  return top;
+}
+
 SvgPlot::Range SvgPlot::data_range(bool x_axis) const {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& s : series_)
@@ -189,7 +197,10 @@ std::string SvgPlot::render() const {
   Range yr = y_range_ ? *y_range_ : data_range(false);
   const double xs = nice_step(xr.hi - xr.lo, 6), ys = nice_step(yr.hi - yr.lo, 5);
   if (!x_range_) xr = {nice_floor(xr.lo, xs), nice_ceil(xr.hi, xs)};
-  if (!y_range_) yr = {nice_floor(yr.lo, ys), nice_ceil(yr.hi, ys)};
+  if (!y_range_) {
+    yr = {nice_floor(yr.lo, ys), nice_ceil(yr.hi, ys)};
+    if (series_top() > yr.hi - 0.01 * (yr.hi - yr.lo)) yr.hi += ys;
+  }
   auto X = [&](double x) { return left + (x - xr.lo) / (xr.hi - xr.lo) * pw; };
   auto Y = [&](double y) { return top + ph - (y - yr.lo) / (yr.hi - yr.lo) * ph; };
 

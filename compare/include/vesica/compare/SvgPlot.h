@@ -3,8 +3,10 @@
 // Any number of series (lines, points, or both), axis labels with units, a legend, and
 // reference marks: horizontal/vertical lines, sloped lines y = a + b x, shaded bands and
 // boxes. The axis ranges fit the data (with "nice" ticks) unless set; sloped lines and a
-// box's volume extent never widen them. NaN values break a line. The <svg> scales down
-// with its container (max-width 100 %), so a page never overflows a narrow window.
+// box's volume extent never widen them; a series reaching the top tick gets one more
+// step above it, so the frame does not hide a line drawn along the top. NaN values break a line.
+// The <svg> scales down with its container (max-width 100 %), so a page never overflows a narrow
+// window.
 //
 //   SvgPlot plot("Filling", "volume (ml)", "Pdet (cmH2O)");
 //   plot.add_points("measured", v, p).add_line("simulated", vs, ps).add_hband(6, 10, "normal");
@@ -72,6 +74,8 @@ class SvgPlot {
     double lo, hi;
   };
   Range data_range(bool x_axis) const;
+  // The largest finite y of the series (not of the marks); -inf without data.
+  double series_top() const;
   std::string legend(double x, double y, bool below) const;
 
   std::string title_, x_label_, y_label_, id_;
