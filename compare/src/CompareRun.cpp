@@ -59,6 +59,7 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
   if (cal) {
     for (const auto& fp : cal->parameters) j["fitted_" + fp.name] = fp.value;
     j["fit_rmse_cmh2o"] = cal->rmse_cmh2o;
+    j["fit_status"] = cal->status;  // "fitted: ...", "no better than a straight line: ..."
   }
   return j;
 }
@@ -96,23 +97,30 @@ ArtefactOptions no_artefacts() {
 void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& metrics,
                   StageRecord& record) {
   const fs::path out(o.output);
-  if (in.wall_stress && !in.wall_stress->png.empty()) {
-    write_text_atomically(out / "wall-stress.png", in.wall_stress->png);
-    write_text_atomically(out / "wall-stress.json", picture_facts(*in.wall_stress).dump(2) + "\n");
+  const bool picture = in.wall_stress && !in.wall_stress->png.empty();
+  // One folder, replaced whole: never a new metrics.json beside an old index.html or PDF.
+  write_atomically(out, [&](const fs::path& tmp) {
+    if (picture) {
+      write_text_atomically(tmp / "wall-stress.png", in.wall_stress->png);
+      write_text_atomically(tmp / "wall-stress.json",
+                            picture_facts(*in.wall_stress).dump(2) + "\n");
+    }
+    write_text_atomically(tmp / "index.html", report_html(in));
+    if (o.no_pdf) {
+      metrics["pdf"] = {{"written", false}, {"why", "--no-pdf"}};
+    } else {
+      const std::string why = print_pdf(tmp / "index.html", tmp / "report.pdf");
+      if (!why.empty()) log()->warn("no report.pdf: {}", why);
+      metrics["pdf"] = {{"written", why.empty()}, {"why", why}};
+    }
+    write_text_atomically(tmp / "metrics.json", metrics.dump(2) + "\n");
+  });
+  if (picture) {
     record.add_output(out / "wall-stress.png");
     record.add_output(out / "wall-stress.json");
   }
-  write_text_atomically(out / "index.html", report_html(in));
   record.add_output(out / "index.html");
-  if (o.no_pdf) {
-    metrics["pdf"] = {{"written", false}, {"why", "--no-pdf"}};
-  } else {
-    const std::string why = print_pdf(out / "index.html", out / "report.pdf");
-    if (!why.empty()) log()->warn("no report.pdf: {}", why);
-    metrics["pdf"] = {{"written", why.empty()}, {"why", why}};
-    if (why.empty()) record.add_output(out / "report.pdf");
-  }
-  write_text_atomically(out / "metrics.json", metrics.dump(2) + "\n");
+  if (metrics["pdf"]["written"].get<bool>()) record.add_output(out / "report.pdf");
   record.add_output(out / "metrics.json");
 }
 
@@ -133,7 +141,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
       measured = std::make_unique<RecordingAnalysis>(
-          analyse(io::read_recording(o.measured, measured_reader), o.artefacts));
+          analyse(io::read_recording(o.measured, measured_reader), o.artefacts,
+                  RecordingFacts{o.fill_rate_ml_min, o.capacity_ml}));
       keep_classes_of_sex(measured->ics, in.patient.sex);
       record.add_input(o.measured);
     }

@@ -6,7 +6,7 @@ namespace vesica::compare {
 
 FillingTimes filling_times(const Recording& r, const IcsParameters& p) {
   FillingTimes f;
-  if (r.rows() == 0) return f;
+  if (r.rows() == 0 || !r.has_time()) return f;  // a table without time has no clock
   f.start_s = r.time_s.front();
   if (r.infused_ml.empty()) return f;
   std::size_t first = 0;

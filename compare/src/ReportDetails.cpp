@@ -44,20 +44,40 @@ std::string comparison_table(const nlohmann::json* comparison) {
   return o.str() + "</table>\n";
 }
 
+// Each fitted series beside what a constant and a straight line achieve on the same
+// readings: a fit that does not beat the line has not explained the data.
+std::string calibration_series(const CalibrationResult& c) {
+  if (c.series.empty()) return {};
+  std::ostringstream o;
+  o << "<table class=\"calibration-series\"><tr><th>Series</th><th>Readings</th><th>RMSE</th>"
+    << "<th>Max error</th><th>Constant baseline</th><th>Straight-line baseline</th>"
+    << "<th>Beats the line</th></tr>\n";
+  for (const auto& s : c.series)
+    o << "<tr><td>" << xml_escape(s.name) << " (" << xml_escape(s.unit) << ")</td><td>" << s.points
+      << "</td><td>" << number(s.rmse) << "</td><td>" << number(s.max_abs_error) << "</td><td>"
+      << number(s.constant_rmse) << "</td><td>" << number(s.line_rmse) << "</td><td>"
+      << (s.beats_line ? "yes" : "no") << "</td></tr>\n";
+  return o.str() + "</table>\n";
+}
+
 std::string calibration_table(const CalibrationResult* c) {
   if (!c) return "<p>No calibration was requested.</p>\n";
   std::ostringstream o;
   o << "<table class=\"calibration\"><tr><th>Parameter</th><th>Fitted</th><th>95 % CI</th>"
-    << "<th>Start</th><th>Bounds</th></tr>\n";
+    << "<th>Start</th><th>Bounds</th><th>Identified</th></tr>\n";
   for (const auto& p : c->parameters)
     o << "<tr><td>" << xml_escape(p.name) << " (" << xml_escape(p.unit) << ")</td><td>"
       << number(p.value) << "</td><td>" << number(p.ci_low) << " &ndash; " << number(p.ci_high)
       << "</td><td>" << number(p.initial) << "</td><td>" << number(p.lower) << " &ndash; "
-      << number(p.upper) << "</td></tr>\n";
-  o << "</table>\n<p>Fit over " << number(c->volume_lo_ml) << "&ndash;" << number(c->volume_hi_ml)
+      << number(p.upper) << "</td><td>" << (p.identifiable ? "yes" : "no")
+      << (p.note.empty() ? "" : ": " + xml_escape(p.note)) << "</td></tr>\n";
+  o << "</table>\n" << calibration_series(*c);
+  o << "<p>Fit over " << number(c->volume_lo_ml) << "&ndash;" << number(c->volume_hi_ml)
     << " ml: RMSE " << number(c->rmse_cmh2o) << " cmH2O, maximum error "
-    << number(c->max_abs_error_cmh2o) << " cmH2O; " << c->simulations << " simulations, "
-    << c->iterations << " iterations; " << xml_escape(c->status) << ".</p>\n";
+    << number(c->max_abs_error_cmh2o) << " cmH2O; " << c->simulations << " simulations ("
+    << c->failed_simulations << " failed), " << c->iterations << " iterations; "
+    << xml_escape(c->status) << ".</p>\n";
+  for (const auto& note : c->notes) o << "<p class=\"note\">" << xml_escape(note) << "</p>\n";
   return o.str();
 }
 
@@ -68,9 +88,16 @@ std::string flags_table(const RecordingAnalysis* a) {
   if (a->flags.empty()) return o.str() + "<p>No artefacts flagged.</p>\n";
   o << "<table class=\"flags\"><tr><th>Line</th><th>Event</th><th>Artefact</th>"
     << "<th>Why</th></tr>\n";
-  for (const auto& f : a->flags)
+  // The first rows only: a recording of noise can flag every one of its rows.
+  constexpr std::size_t kShownFlags = 200;
+  for (std::size_t i = 0; i < a->flags.size() && i < kShownFlags; ++i) {
+    const auto& f = a->flags[i];
     o << "<tr><td>" << f.line << "</td><td>" << xml_escape(f.event) << "</td><td>"
       << xml_escape(f.kind) << "</td><td>" << xml_escape(f.detail) << "</td></tr>\n";
+  }
+  if (a->flags.size() > kShownFlags)
+    o << "<tr><td colspan=\"4\">... and " << a->flags.size() - kShownFlags
+      << " more (metrics.json lists them all)</td></tr>\n";
   return o.str() + "</table>\n";
 }
 

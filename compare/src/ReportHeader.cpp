@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "ReportParts.h"
-#include "vesica/compare/FillingTimes.h"
 #include "vesica/compare/SvgPlot.h"
 #include "vesica/core/StageRecord.h"
 
@@ -45,10 +44,10 @@ std::string recording_card(const ReportInputs& in) {
   o << row("Sex", std::string(sex_name(p.sex)) +
                       (p.sex_source.empty() ? "" : " (" + xml_escape(p.sex_source) + ")"));
   o << row("Age", p.age_years ? number(*p.age_years, 3) + " years" : "not stated");
-  const FillingTimes f = filling_times(m.recording, m.ics);
-  std::string rate = f.mean_rate_ml_min
-                         ? number(*f.mean_rate_ml_min, 2) + " ml/min (mean of the infused volume)"
-                         : "no infused-volume channel";
+  // The rate the parameters and the calibration use (IcsParameters: --fill-rate-ml-min, else
+  // the slope of the bladder volume over filling).
+  std::string rate = m.ics.fill_rate_ml_min ? number(*m.ics.fill_rate_ml_min, 2) + " ml/min"
+                                            : "not known (no time column)";
   if (p.stated_fill_rate_ml_min)
     rate += "; the recording states " + number(*p.stated_fill_rate_ml_min, 3) + " ml/min";
   o << row("Fill rate", rate);

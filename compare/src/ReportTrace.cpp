@@ -81,9 +81,9 @@ std::vector<MultichannelTrace::Phase> phases(const RecordingAnalysis& a, double 
   return out;
 }
 
-std::vector<Marker> markers(const ReportInputs& in, double m_start, double s_start) {
+std::vector<Marker> markers(const ReportInputs& in, bool timed, double m_start, double s_start) {
   std::vector<Marker> out;
-  if (const RecordingAnalysis* m = in.measured) {
+  if (const RecordingAnalysis* m = timed ? in.measured : nullptr) {
     const Recording& r = m->recording;
     for (std::size_t i = 0; i < r.rows() && !r.event.empty(); ++i)
       if (is_ics_event(r.event[i]))
@@ -124,7 +124,9 @@ std::string trace_section(const ReportInputs& in) {
                  trace.add_panel("Pdet", "cmH2O", -1e9), trace.add_panel("Flow", "ml/s", 0.0),
                  trace.add_panel("Infused", "ml", 0.0),  trace.add_panel("Voided", "ml", 0.0)};
   double m_start = 0, s_start = 0;
-  if (in.measured) {
+  // A table without time (a pressure-flow table) has no place on a time axis.
+  const bool timed = in.measured && in.measured->recording.has_time();
+  if (timed) {
     m_start = filling_times(in.measured->recording, in.measured->ics).start_s;
     add_recording(trace, p, *in.measured, "measured", kMeasured, m_start, 2.2);
     trace.add_phase_row("measured", phases(*in.measured, m_start, "voiding", "#a6bddb"));
@@ -135,14 +137,16 @@ std::string trace_section(const ReportInputs& in) {
     trace.add_phase_row("simulated",
                         phases(*in.simulated, s_start, simulated_voiding_label(in), "#fdae6b"));
   }
-  const std::vector<Marker> list = markers(in, m_start, s_start);
+  const std::vector<Marker> list = markers(in, timed, m_start, s_start);
   for (const Marker& m : list) trace.add_event({m.t, m.color});
   std::ostringstream o;
   o << "<figure class=\"wide\">" << trace.render()
     << "<figcaption>Both recordings against the time since their own start of filling "
        "(the measured one from its infusion extrapolated back to zero). Numbered "
-       "markers:</figcaption>"
-    << marker_list(list) << "</figure>\n";
+       "markers:"
+    << (in.measured && !timed ? " The measured table has no time column and is not shown here."
+                              : "")
+    << "</figcaption>" << marker_list(list) << "</figure>\n";
   return o.str();
 }
 

@@ -15,8 +15,10 @@ nlohmann::json capacity_stress(const std::filesystem::path& compare_executable,
     ChildProcess child(
         compare_executable,
         {"--wall-stress-at-capacity", std::filesystem::absolute(simulation).string()}, simulation);
-    while (child.read_lines(lines)) {
+    ChildOutput out;
+    while (child.read(out)) {
     }
+    lines = std::move(out.lines);
     status = child.wait();
   } catch (const Error& e) {
     why = e.what();

@@ -17,7 +17,7 @@ struct FillingTimes {
 // Mean rate: infused volume from the first row with infusion to capacity over the time
 // between them. Start: that first row's time less its infused volume at the mean rate
 // (clinical exports often begin mid-infusion), never before the row ahead of it; the first
-// row when there is no infused channel.
+// row when there is no infused channel; 0 and no rate for a table without time.
 FillingTimes filling_times(const Recording& r, const IcsParameters& p);
 
 }  // namespace vesica::compare
