@@ -32,12 +32,27 @@ void validate(const CompareOptions& o) {
     usage_error("--calibrate needs --measured (the curve to fit) and --mesh (the geometry)");
 }
 
-// The wall at capacity: --mesh, else the series .vtu nearest the simulated capacity time.
-std::optional<fs::path> capacity_mesh(const CompareOptions& o, const RecordingAnalysis* sim) {
-  if (!o.mesh.empty()) return fs::path(o.mesh);
+// The simulation's own series frame nearest its capacity (series.pvd beside history.csv).
+std::optional<fs::path> series_frame_at_capacity(const CompareOptions& o,
+                                                 const RecordingAnalysis* sim) {
   if (!sim) return std::nullopt;
   const fs::path pvd = fs::path(o.simulated).parent_path() / "series.pvd";
   return frame_at_time(pvd, sim->recording.time_s[sim->ics.capacity_row]);
+}
+
+// The wall at capacity: --mesh when it carries a stress; else the series frame at capacity
+// (a --mesh given as the calibration's geometry has no stress of its own).
+std::optional<WallStressPicture> capacity_picture(const CompareOptions& o,
+                                                  const RecordingAnalysis* sim) {
+  const fs::path self = fs::read_symlink("/proc/self/exe");
+  std::optional<WallStressPicture> picture;
+  if (!o.mesh.empty()) picture = make_wall_stress_picture(o.mesh, self);
+  if (picture && !picture->png.empty()) return picture;
+  if (const auto frame = series_frame_at_capacity(o, sim)) {
+    WallStressPicture from_series = make_wall_stress_picture(*frame, self);
+    if (!from_series.png.empty() || !picture) return from_series;
+  }
+  return picture;
 }
 
 nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalysis* s,
@@ -172,10 +187,10 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   in.simulated = simulated.get();
   in.calibration = calibration ? &*calibration : nullptr;
   in.comparison = comparison.is_null() ? nullptr : &comparison;
-  if (const auto mesh = capacity_mesh(o, simulated.get())) {
+  {
     PhaseTimer t(record, "render");
-    in.wall_stress = make_wall_stress_picture(*mesh, fs::read_symlink("/proc/self/exe"));
-    if (in.wall_stress->png.empty()) log()->warn("{}", in.wall_stress->message);
+    in.wall_stress = capacity_picture(o, simulated.get());
+    if (in.wall_stress && in.wall_stress->png.empty()) log()->warn("{}", in.wall_stress->message);
   }
 
   nlohmann::json metrics;

@@ -4,6 +4,7 @@
 // the 95th percentile is area-weighted, the outlet cap left out. The picture is kept in
 // build/test-artefacts/wall-stress for a look.
 #include <cmath>
+#include <fstream>
 
 #include <gtest/gtest.h>
 #include <vtkNew.h>
@@ -12,6 +13,8 @@
 
 #include "CompareTestSupport.h"
 #include "vesica/compare/WallStress.h"
+#include "vesica/io/PvdSeries.h"
+#include "vesica/io/VtuFile.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::test;
@@ -90,4 +93,25 @@ TEST(WallStressPicture, ColourBarSpansTheFramesMaximumPrincipalStress) {
   ASSERT_EQ(std::sscanf(chunk.c_str(), "%lf %lf", &lo, &hi), 2) << chunk;
   EXPECT_NEAR(hi, sigma1_max, 0.01 * sigma1_max);
   EXPECT_LT(lo, hi);
+}
+
+// With --calibrate, --mesh is the geometry the calibration simulates (no stress on it): the
+// picture then comes from the simulation's own series frame at capacity.
+TEST(WallStressPicture, AMeshWithoutStressLeavesThePictureToTheSeriesFrame) {
+  const fs::path dir = scratch_dir("compare-wall-stress-series");
+  fs::create_directories(dir / "sim/series");
+  const double sigma1_max = write_stress_sphere(dir / "sim/series/step_0000.vtu");
+  std::ofstream(dir / "sim/series.pvd") << vesica::io::pvd_text({{360.0, "series/step_0000.vtu"}});
+  fs::copy_file(compare_data("synthetic-history.csv"), dir / "sim/history.csv");
+  vesica::io::VtuGrid bare = vesica::io::read_vtu(dir / "sim/series/step_0000.vtu");
+  bare.cell_data.clear();
+  vesica::io::write_vtu(bare, dir / "geometry.vtu");
+
+  const auto run = run_command(
+      compare_exe() + " --simulated " + (dir / "sim/history.csv").string() + " --mesh " +
+      (dir / "geometry.vtu").string() + " --no-pdf -o " + (dir / "report").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto facts = nlohmann::json::parse(read_text(dir / "report" / "wall-stress.json"));
+  EXPECT_EQ(facts["frame"], "step_0000.vtu");
+  EXPECT_NEAR(facts["colour_bar_kpa"][1].get<double>(), sigma1_max, 0.01 * sigma1_max);
 }
