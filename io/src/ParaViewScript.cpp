@@ -26,8 +26,8 @@ std::string field_format(const std::string& name) {
   return name + " = %g";
 }
 
-// The fixed part of the script; the header sets SERIES, ARRAY, COMPONENT, TITLE, FIELDS
-// and OPEN_AT.
+// The fixed part of the script; the header sets SERIES, ARRAY, COMPONENT, LEFT_OUT, TITLE,
+// FIELDS and OPEN_AT.
 const char* kBody = R"PY(
 import os
 import sys
@@ -44,7 +44,11 @@ series.UpdatePipeline(OPEN_AT)
 stress = PythonCalculator(registrationName="colour", Input=series)
 stress.ArrayAssociation = "Cell Data"
 stress.ArrayName = "shown"
-stress.Expression = "%s[:, %d]" % (ARRAY, COMPONENT)
+if LEFT_OUT:
+    stress.Expression = "numpy.where(%s == %r, numpy.nan, %s[:, %d])" % (
+        LEFT_OUT[0], LEFT_OUT[1], ARRAY, COMPONENT)
+else:
+    stress.Expression = "%s[:, %d]" % (ARRAY, COMPONENT)
 
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [1000, 800]
@@ -58,6 +62,8 @@ ColorBy(display, ("CELLS", "shown"))
 lut = GetColorTransferFunction("shown")
 lut.ApplyPreset("Viridis (matplotlib)", True)
 display.RescaleTransferFunctionToDataRange(False, True)
+lut.NanColor = [0.6, 0.6, 0.6]  # the cells left out
+print("colour bar: %.6g %.6g" % (lut.RGBPoints[0], lut.RGBPoints[-4]))
 bar = GetScalarBar(lut, view)
 bar.Title = TITLE
 bar.ComponentTitle = ""
@@ -113,7 +119,12 @@ std::string paraview_script(const std::string& pvd, const ParaViewColouring& c,
     << "SERIES = " << py_string(pvd) << "\n"
     << "ARRAY = " << py_string(c.cell_array) << "\n"
     << "COMPONENT = " << c.component << "\n"
-    << "TITLE = " << py_string(c.title) << "\n"
+    << "LEFT_OUT = ";
+  if (c.left_out_array.empty())
+    s << "None\n";
+  else
+    s << "(" << py_string(c.left_out_array) << ", " << c.left_out_value << ")\n";
+  s << "TITLE = " << py_string(c.title) << "\n"
     << "FIELDS = [";
   for (std::size_t i = 0; i < fields.size(); ++i)
     s << (i ? ", " : "") << "(" << py_string(fields[i]) << ", "

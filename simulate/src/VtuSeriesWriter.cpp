@@ -36,7 +36,7 @@ io::VtuGrid wall_frame(const WallModel& wall, const std::vector<Eigen::Vector3d>
 VtuSeriesWriter::VtuSeriesWriter(std::filesystem::path folder)
     : series_(std::move(folder), "series") {
   series_.set_paraview_script(
-      {"cauchy_principal_kpa", 0, "max principal Cauchy stress sigma1 (kPa)"});
+      {"cauchy_principal_kpa", 0, "max principal Cauchy stress sigma1 (kPa)", "region", 2});
 }
 
 void VtuSeriesWriter::add_step(double time_s, const FrameState& state, const WallModel& wall,

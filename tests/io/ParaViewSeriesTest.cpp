@@ -36,15 +36,21 @@ double field_value(vtkUnstructuredGrid* grid, const char* name) {
 fs::path write_series(const fs::path& dir) {
   const io::VolumeMesh m = octahedron_mesh();
   io::PvdSeries series(dir, "series");
-  series.set_paraview_script({"cauchy_principal_kpa", 0, "max principal Cauchy stress (kPa)"});
+  series.set_paraview_script(
+      {"cauchy_principal_kpa", 0, "max principal Cauchy stress (kPa)", "region", 2});
   const double volume[] = {100, 300, 200}, pdet[] = {1, 4, 3};
   for (int step = 0; step < 3; ++step) {
     io::VtuGrid frame;
     frame.points_mm = m.nodes * (1.0 + 0.1 * step);
     frame.triangles = m.triangles;
     io::VtuArray stress{"cauchy_principal_kpa", 2, {}, false};
-    for (int t = 0; t < 8; ++t) stress.values.insert(stress.values.end(), {2.0 + t, 1.0});
-    frame.cell_data.push_back(stress);
+    io::VtuArray region{"region", 1, {}, true};
+    // σ1 = 2..9 kPa; the last triangle (9 kPa) is the outlet cap, region 2
+    for (int t = 0; t < 8; ++t) {
+      stress.values.insert(stress.values.end(), {2.0 + t, 1.0});
+      region.values.push_back(t == 7 ? 2 : 1);
+    }
+    frame.cell_data = {stress, region};
     frame.field_data = {{"volume_ml", 1, {volume[step]}, false},
                         {"pdet_cmh2o", 1, {pdet[step]}, false}};
     series.add_step(10.0 * step, frame);
@@ -91,6 +97,7 @@ TEST(ParaViewSeries, ViewScriptIsPythonThatOpensTheStepOfLargestVolume) {
   ASSERT_TRUE(std::regex_search(s, open_at, std::regex("\nOPEN_AT = ([0-9.]+)")));
   EXPECT_EQ(std::stod(open_at[1]), 10.0);  // the 300 ml step
   EXPECT_NE(s.find("ARRAY = \"cauchy_principal_kpa\""), std::string::npos);
+  EXPECT_NE(s.find("LEFT_OUT = (\"region\", 2)"), std::string::npos);
   const auto compiled = run_command("/usr/bin/python3 -m py_compile " + script.string());
   EXPECT_EQ(compiled.exit_code, 0) << compiled.output;
 
@@ -108,6 +115,12 @@ TEST(ParaViewSeries, ViewScriptIsPythonThatOpensTheStepOfLargestVolume) {
                                pv + " view.py --screenshot " + shot.string());
   EXPECT_EQ(run.exit_code, 0) << run.output;
   EXPECT_GT(fs::exists(shot) ? fs::file_size(shot) : 0u, 1000u) << run.output;
+  // the colour bar spans the wall's σ1, 2..8 kPa: the outlet cap's 9 kPa is left out
+  std::smatch bar;
+  ASSERT_TRUE(std::regex_search(run.output, bar, std::regex("colour bar: ([^ ]+) ([^\\s]+)")))
+      << run.output;
+  EXPECT_DOUBLE_EQ(std::stod(bar[1]), 2.0);
+  EXPECT_DOUBLE_EQ(std::stod(bar[2]), 8.0);
 }
 
 }  // namespace
