@@ -90,7 +90,7 @@ std::string mesh_of(const nlohmann::json& m, const nlohmann::json& p) {
   if (!m.contains("inputs") || !m["inputs"].is_array()) return "";
   for (const auto& in : m["inputs"])
     if (in.is_object() && in.contains("path") && in["path"].is_string()) {
-      const std::string path = in["path"].get<std::string>();
+      std::string path = in["path"].get<std::string>();
       const std::string ext = fs::path(path).extension().string();
       if (ext == ".msh" || ext == ".vtu") return path;
     }
