@@ -32,27 +32,39 @@ std::string short_number(double v) {
   return o.str();
 }
 
-// The manifest of the vesica-simulate run that wrote this history.csv: beside it (a run
-// on its own writes summary.json.manifest.json) or in the folder above (the runner's
-// <stage>.manifest.json), recognised by the history's content hash among its outputs.
+bool lists_output(const nlohmann::json& m, const std::string& hash) {
+  if (!m.contains("tool") || m["tool"] != "vesica-simulate" || !m.contains("outputs") ||
+      !m["outputs"].is_array())
+    return false;
+  for (const auto& out : m["outputs"])
+    if (out.is_object() && out.contains("hash") && out["hash"] == hash) return true;
+  return false;
+}
+
+// The manifest of the vesica-simulate run that wrote this history.csv, recognised by the
+// history's content hash among its outputs: in the history's folder or the one above, or
+// in their .vesica/ (where a stage run alone, .vesica/<output folder>.manifest.json, and the
+// runner, <stage>.manifest.json, keep it).
 fs::path find_manifest(const fs::path& history) {
   const std::string hash = content_hash(history);
   const fs::path dir = history.parent_path().empty() ? fs::path(".") : history.parent_path();
-  for (const fs::path& folder :
-       {dir, dir.parent_path().empty() ? fs::path(".") : dir.parent_path()}) {
+  const fs::path up = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
+  for (const fs::path& folder : {dir, dir / ".vesica", up, up / ".vesica"}) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(folder, ec)) {
       const std::string name = entry.path().filename().string();
       if (name.size() < 14 || name.compare(name.size() - 14, 14, ".manifest.json") != 0) continue;
-      const nlohmann::json m = read_json(entry.path());
-      if (m.value("tool", "") != "vesica-simulate" || !m.contains("outputs") ||
-          !m["outputs"].is_array())
-        continue;
-      for (const auto& out : m["outputs"])
-        if (out.value("hash", "") == hash) return entry.path();
+      if (lists_output(read_json(entry.path()), hash)) return entry.path();
     }
   }
   return {};
+}
+
+// The folder a manifest's relative paths start from: a manifest in .vesica/ describes the
+// folder that holds .vesica/.
+fs::path manifest_base(const fs::path& manifest) {
+  const fs::path dir = manifest.parent_path();
+  return dir.filename() == ".vesica" ? dir.parent_path() : dir;
 }
 
 // The material's name and SI parameters: "material_si" {name, params} beside the table's
@@ -172,7 +184,7 @@ SimulationSettings read_simulation_settings(const fs::path& history) {
   if (!s.r1_cmh2o_s_per_ml) s.r1_cmh2o_s_per_ml = number(p, "r1");
   if (!s.r2_cmh2o_s2_per_ml2) s.r2_cmh2o_s2_per_ml2 = number(p, "r2");
   if (const std::string mesh = mesh_of(m, p); !mesh.empty())
-    read_mesh(s.manifest.parent_path(), mesh, s);
+    read_mesh(manifest_base(s.manifest), mesh, s);
   read_invocation_thickness(m.value("invocation", nlohmann::json()), s);
   return s;
 }

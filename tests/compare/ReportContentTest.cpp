@@ -152,13 +152,15 @@ TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
         {"level", 1}}},
       {"inputs", {{{"path", "missing.msh"}}}},
       {"invocation", {"missing.msh", "-o", "sim", "--thickness-mm", "3"}}};
-  std::ofstream(dir / "simulate.manifest.json") << manifest.dump(2);
+  // where vesica-simulate run alone keeps it: .vesica/<output folder>.manifest.json
+  fs::create_directories(dir / ".vesica");
+  std::ofstream(dir / ".vesica/sim.manifest.json") << manifest.dump(2);
 
   const Report r = compare("straining-run", "--simulated " + (dir / "sim/history.csv").string());
   EXPECT_TRUE(r.metrics["simulated"]["artefacts"].empty()) << r.metrics["simulated"]["artefacts"];
   EXPECT_EQ(r.html.find("artefact rows"), std::string::npos);
   const auto& s = r.metrics["simulation_settings"];
-  EXPECT_EQ(s["manifest"], (dir / "simulate.manifest.json").string());
+  EXPECT_EQ(s["manifest"], (dir / ".vesica/sim.manifest.json").string());
   EXPECT_EQ(s["material_parameters"]["mu"], "3 kPa");
   EXPECT_EQ(s["thickness_mm"], 3.0);
   EXPECT_EQ(s["voiding_drive"], "abdominal straining 4 kPa (40.79 cmH2O)");  // 4000/98.0665
