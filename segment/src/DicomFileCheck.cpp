@@ -331,6 +331,14 @@ std::pair<std::uintmax_t, Encoding> walk_meta_group(FileBytes& bytes,
   return {at, encoding_of(syntax, file)};
 }
 
+// Some exporters name explicit VR little endian and write the data set implicit; GDCM
+// tolerates that when the first element says so, and the walk does the same.
+Encoding encoding_found(FileBytes& bytes, std::uintmax_t data_set, Encoding named) {
+  unsigned char head[8];
+  if (!named.explicit_vr || named.big_endian || !bytes.read(data_set, head, 8)) return named;
+  return vr_info(head + 4).known ? named : Encoding{false, false};
+}
+
 // A meta group at offset 132 (group 0002, a standard VR) behind a marker that is not "DICM".
 bool meta_group_follows(FileBytes& bytes) {
   unsigned char head[8];
@@ -372,8 +380,8 @@ DicomFileKind check_dicom_file(const std::filesystem::path& file) {
     if (const auto bare = bare_data_set(bytes)) DataSetWalk(bytes, file).walk_file(0, *bare);
     return DicomFileKind::NotPart10;
   }
-  const auto [data_set, encoding] = walk_meta_group(bytes, file);
-  DataSetWalk(bytes, file).walk_file(data_set, encoding);
+  const auto [data_set, named] = walk_meta_group(bytes, file);
+  DataSetWalk(bytes, file).walk_file(data_set, encoding_found(bytes, data_set, named));
   return DicomFileKind::Part10;
 }
 

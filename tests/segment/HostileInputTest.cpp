@@ -129,47 +129,58 @@ TEST(HostileDicom, SliceCutShortAnywhereNamesTheSlice) {
   }
 }
 
+// A phantom series in scratch folder `name` whose slice `victim` is damaged by
+// damage(dir, series, slice): vesica-segment refuses it with `message` in one line.
+template <class Damage>
+void expect_damaged_slice_refused(const std::string& name, const std::string& victim,
+                                  const Damage& damage, const std::string& message) {
+  const auto dir = vesica::test::scratch_dir(name);
+  const auto series = small_series(dir, "ct");
+  damage(dir, series, series / victim);
+  expect_rejected(dir, series.string() + kSeed,
+                  victim + ": truncated or corrupt DICOM file (" + message + ")");
+}
+
 // A length field that lies (here Rows, implicit VR little endian as the phantom series is
 // written): GDCM allocated the 2.8 GB it names before noticing the file is shorter.
 TEST(HostileDicom, ElementLongerThanTheFileIsRefusedBeforeGdcmAllocatesIt) {
-  const auto dir = vesica::test::scratch_dir("segment-hostile-length");
-  const auto series = small_series(dir, "ct");
-  const fs::path slice = series / "slice_0005.dcm";
-  patch(slice, offset_of(slice, std::string("\x28\x00\x10\x00", 4)) + 4, std::uint32_t{0xA980673C});
-  expect_rejected(dir, series.string() + kSeed,
-                  "slice_0005.dcm: truncated or corrupt DICOM file (element (0028,0010) of "
-                  "2843764540 bytes runs past the end of its file)");
+  expect_damaged_slice_refused(
+      "segment-hostile-length", "slice_0005.dcm",
+      [](const fs::path&, const fs::path&, const fs::path& slice) {
+        const std::string rows("\x28\x00\x10\x00", 4);
+        patch(slice, offset_of(slice, rows) + 4, std::uint32_t{0xA980673C});
+      },
+      "element (0028,0010) of 2843764540 bytes runs past the end of its file");
 }
 
 // A meta element whose value representation is no VR of the standard: GDCM read the meta
 // group as implicit VR and aborted on its own assertion ("Should not happen").
 TEST(HostileDicom, MetaHeaderWithAnUnknownValueRepresentationIsRefused) {
-  const auto dir = vesica::test::scratch_dir("segment-hostile-meta-vr");
-  const auto series = small_series(dir, "ct");
-  const fs::path slice = series / "slice_0002.dcm";
-  ASSERT_EQ(offset_of(slice, std::string("\x02\x00\x00\x00UL", 6)), 132);
-  patch(slice, 136, 'Q');  // (0002,0000) UL becomes "QL", as a fuzzed file had it
-  expect_rejected(dir, series.string() + kSeed,
-                  "slice_0002.dcm: truncated or corrupt DICOM file (file meta information is "
-                  "not explicit VR)");
+  expect_damaged_slice_refused(
+      "segment-hostile-meta-vr", "slice_0002.dcm",
+      [](const fs::path&, const fs::path&, const fs::path& slice) {
+        ASSERT_EQ(offset_of(slice, std::string("\x02\x00\x00\x00UL", 6)), 132);
+        patch(slice, 136, 'Q');  // (0002,0000) UL becomes "QL", as a fuzzed file had it
+      },
+      "file meta information is not explicit VR");
 }
 
 // Sequences and items are walked: one of undefined length reads, and an item whose length
 // runs past its file is refused before GDCM trusts it.
 TEST(HostileDicom, SequenceItemLongerThanTheFileIsRefused) {
-  const auto dir = vesica::test::scratch_dir("segment-hostile-item");
-  const auto series = small_series(dir, "ct");
-  for (const auto& f : slices_of(series)) add_referenced_image(f);
-  ASSERT_EQ(run_tool("vesica-segment",
+  expect_damaged_slice_refused(
+      "segment-hostile-item", "slice_0003.dcm",
+      [](const fs::path& dir, const fs::path& series, const fs::path& slice) {
+        for (const auto& f : slices_of(series)) add_referenced_image(f);
+        ASSERT_EQ(
+            run_tool("vesica-segment",
                      series.string() + kSeed + " -o " + (dir / "nested.nii.gz").string(), dir),
             0)
-      << read_text(dir / "stderr.txt");
-  const fs::path slice = series / "slice_0003.dcm";
-  const std::string item_of_undefined_length("\xFE\xFF\x00\xE0\xFF\xFF\xFF\xFF", 8);
-  patch(slice, offset_of(slice, item_of_undefined_length) + 4, std::uint32_t{0x7FFFFFF0});
-  expect_rejected(dir, series.string() + kSeed,
-                  "slice_0003.dcm: truncated or corrupt DICOM file (element (FFFE,E000) of "
-                  "2147483632 bytes runs past the end of its file)");
+            << read_text(dir / "stderr.txt");
+        const std::string item_of_undefined_length("\xFE\xFF\x00\xE0\xFF\xFF\xFF\xFF", 8);
+        patch(slice, offset_of(slice, item_of_undefined_length) + 4, std::uint32_t{0x7FFFFFF0});
+      },
+      "element (FFFE,E000) of 2147483632 bytes runs past the end of its file");
 }
 
 // Without the check the first or last slice was dropped and the series read 28 of 30.
