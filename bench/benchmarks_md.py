@@ -126,6 +126,8 @@ def level2(d):
     return (f"{num(d.get('triangles'))} triangles, {num(d.get('tetrahedra'))} tetrahedra",
             d.get("filling_s"), d.get("filling_target_s"),
             join(f"voiding {seconds(d.get('voiding_s'))}", f"end to end {seconds(d.get('total_s'))}",
+                 f"simulated/compute {num(d.get('filling_simulated_per_compute'), 3)} filling, "
+                 f"{num(d.get('cystometry_simulated_per_compute'), 3)} whole cystometry",
                  f"{num(newton.get('mean_iterations_per_step'))} Newton iterations a step",
                  f"{num(newton.get('seconds_per_step'))} s a step",
                  f"{d.get('remeshes', '?')} remeshes",
@@ -193,7 +195,7 @@ CASES = [
     ("simulate", "balloon_5000_triangles", "simulate: balloon to 95 % of the limit pressure", balloon, True),
     ("simulate", "cystometry_2300_triangles", "simulate: cystometry 50 → 350 ml and voiding, sphere", cystometry, True),
     ("simulate", "cystometry_17000_triangles", "simulate: cystometry 50 → 350 ml and voiding, fine sphere", cystometry, True),
-    ("simulate_level2", "level2_real_bladder", "simulate --level 2: filling 50 → 100 ml, real CT bladder", level2, True),
+    ("simulate_level2", "level2_real_bladder", "simulate --level 2: 50 → 350 ml and voiding, real CT bladder", level2, True),
     ("compare", None, "compare: ICS parameters, metrics and report", compare_report, True),
     ("compare", "calibration_sphere_2312_triangles", "compare: calibration of μ, sphere", calibration, True),
     ("compare", "calibration_whole_recording_ct_2474_triangles",

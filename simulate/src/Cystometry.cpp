@@ -56,8 +56,8 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
           "stop_flow_ml_s and max_void_s must be > 0");
   if (o.level != 1 && o.level != 2) usage_error("level must be 1 or 2");
   if (o.level == 2) {
-    if (!(o.level2.fill_dt_s > 0.0 && o.level2.void_dt_s > 0.0))
-      usage_error("level 2 time steps must be > 0");
+    if (!(o.level2.fill_dt_s >= 0.0 && o.level2.void_dt_s > 0.0))
+      usage_error("level 2 time steps must be > 0 (the filling's 0: adaptive)");
     if (o.dynamic || o.reference != ReferenceState::Scale)
       usage_error("level 2 supports the scaled reference (--reference scale) without --dynamic");
   }

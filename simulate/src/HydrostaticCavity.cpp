@@ -150,6 +150,22 @@ StepResult HydrostaticCavity::try_step(const StepRequest& step) {
   return failed(iterations);
 }
 
+void HydrostaticCavity::continue_from(const std::vector<Eigen::Vector3d>& x,
+                                      const MembraneProblem& wall_state, const Takeover& state,
+                                      const ProtocolLoads& loads) {
+  x_ = x;
+  problem_.copy_committed_state(wall_state);
+  loads_.inside.p0 = state.pves_pa;
+  q_out_ = state.outflow_m3_s;
+  V0_ = state.start_volume_m3;
+  volume_ = enclosed_volume(wall_, x_);
+  committed_loads_ = loads;
+  set_loads(loads);
+  x_before_.clear();  // no last step to extrapolate from
+  dt_before_ = 0.0;
+  smooth_ = false;
+}
+
 std::vector<MembraneStressOutput> HydrostaticCavity::wall_stresses() const {
   return problem_.element_outputs(x_, loads_);
 }

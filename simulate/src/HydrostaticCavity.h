@@ -32,6 +32,17 @@ class HydrostaticCavity final : public CavityModel {
   void start_clock() override;
   void begin_voiding(const UrethraLaw& urethra) override;
   StepResult try_step(const StepRequest& step) override;
+  // Where another model on the same wall stands (level 2 below the stress-free volume,
+  // docs/navier-stokes.md §8).
+  struct Takeover {
+    double pves_pa = 0.0;          // the urine pressure now
+    double outflow_m3_s = 0.0;     // through the urethra now
+    double start_volume_m3 = 0.0;  // when the clock started: the protocol's bookkeeping base
+  };
+  // Continues, with the clock running, from that state: the wall at x with wall_state's
+  // committed history, under loads.
+  void continue_from(const std::vector<Eigen::Vector3d>& x, const MembraneProblem& wall_state,
+                     const Takeover& state, const ProtocolLoads& loads);
 
   double volume() const override { return volume_; }
   double pves() const override { return loads_.inside.p0; }

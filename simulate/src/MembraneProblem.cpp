@@ -236,6 +236,13 @@ void MembraneProblem::commit() {
   J2_old_ = J2_new_;
 }
 
+void MembraneProblem::copy_committed_state(const MembraneProblem& other) {
+  if (other.history_old_.size() != history_old_.size() || other.J2_old_.size() != J2_old_.size())
+    throw std::invalid_argument("MembraneProblem: another wall's state");
+  history_old_ = history_new_ = other.history_old_;
+  J2_old_ = J2_new_ = other.J2_old_;
+}
+
 void MembraneProblem::apply_increment(const Eigen::VectorXd& du,
                                       std::vector<Eigen::Vector3d>& x) const {
   for (std::size_t n = 0; n < x.size(); ++n)

@@ -69,6 +69,9 @@ class MembraneProblem {
 
   // Accepts the state of the last assemble() as converged (history, thickness guesses).
   void commit();
+  // Takes over the committed state (history, thickness guesses) of another problem on the
+  // same wall and material: a model that continues where another one stopped.
+  void copy_committed_state(const MembraneProblem& other);
 
   // x += du on the free dofs.
   void apply_increment(const Eigen::VectorXd& du, std::vector<Eigen::Vector3d>& x) const;

@@ -127,12 +127,18 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
   t.integer("level", r.level, "-", NumberRange::at_least(1).at_most(2),
             "1: urine as a hydrostatic volume (seconds); 2: Navier-Stokes urine on the "
             "tetrahedra of vesica-mesh --fluid (velocity, wall shear; minutes)");
-  t.number("fluid_dt_s", r.level2.fill_dt_s, "s", NumberRange::greater_than(0).at_most(10),
+  t.number("fluid_dt_s", r.level2.fill_dt_s, "s",
+           NumberRange::greater_than(0).at_most(10).or_value(
+               0, "adaptive: growing after easy steps up to max_fill_step_ml"),
            "level 2: time step while filling");
   t.number("void_dt_s", r.level2.void_dt_s, "s", NumberRange::greater_than(0).at_most(1),
            "level 2: time step while voiding");
   t.number("urine_viscosity_pa_s", r.level2.urine_viscosity, "Pa*s",
            NumberRange::at_least(1e-4).at_most(1), "level 2: urine viscosity");
+  t.choice<Level2LinearSolver>(
+      "linear_solver", r.level2.linear_solver,
+      {{"krylov", Level2LinearSolver::Krylov}, {"direct", Level2LinearSolver::Direct}},
+      "level 2: krylov (GMRES on a reused LU) or direct (an LU every Newton iteration)");
   t.flag_off("no_series", r.write_series, "do not write the .pvd/.vtu series");
 }
 

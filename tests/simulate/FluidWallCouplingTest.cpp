@@ -233,10 +233,13 @@ TEST(FluidWallCoupling, RemeshingMidFillingKeepsVolumeAndTheBalloonCurve) {
 TEST(FluidWallCoupling, RemeshingTransfersLinearFieldsExactly) {
   // P1 interpolation reproduces a linear field whatever the new nodes: an independent
   // truth for the point location and the transfer, on a wall moved by one filling step.
+  // The velocity field is divergence-free (trace A = 0), so that the projection after the
+  // transfer (DivergenceFreeProjection.h) must keep it too: only the convection it
+  // neglects, ρ/Δt_p above ρ|∇u| by its dominance factor 1e8, may change it.
   CoupledBalloon b(8);
   ASSERT_TRUE(b.coupling->step(2.0, WallLoads{}, inflow_at_node(b.wall, b.inlet, 1e-6)).converged);
   Eigen::Matrix3d A;
-  A << 1.0, -2.0, 0.5, 0.3, 0.7, -1.1, 2.0, 0.1, -0.4;             // 1/s
+  A << 1.0, -2.0, 0.5, 0.3, 0.7, -1.1, 2.0, 0.1, -1.7;             // 1/s, trace 0
   const Eigen::Vector3d c(0.01, -0.02, 0.005), g(3e3, -1e4, 5e3);  // m/s, Pa/m
   const auto linear = [&](const std::vector<Eigen::Vector3d>& x) {
     Eigen::VectorXd state(kDofsPerNode * static_cast<Eigen::Index>(x.size()));
@@ -263,6 +266,6 @@ TEST(FluidWallCoupling, RemeshingTransfersLinearFieldsExactly) {
       "[ coupling ] transfer: %zu -> %zu nodes, max error u %.2e of %.2e m/s, p %.2e of "
       "%.2e Pa\n",
       nodes_before, b.coupling->positions().size(), u_error, u_scale, p_error, p_scale);
-  EXPECT_LE(u_error, 1e-12 * u_scale);
+  EXPECT_LE(u_error, 1e-7 * u_scale);
   EXPECT_LE(p_error, 1e-12 * p_scale);
 }

@@ -1,5 +1,6 @@
 #include "fluid/CavityTetrahedra.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "vesica/mesh/CavityMesher.h"
@@ -37,6 +38,52 @@ FluidMesh cavity_tetrahedra(const WallModel& wall, const std::vector<Eigen::Vect
     mesh.tets.push_back(
         {cavity.tets(t, 0), cavity.tets(t, 1), cavity.tets(t, 2), cavity.tets(t, 3)});
   return mesh;
+}
+
+namespace {
+
+// gmsh runs of one size search at most.
+constexpr int kSizeSearchRuns = 4;
+// log(count) against log(size) before two sizes give a secant: the size field's grading
+// from the wall's own edges makes the count fall more slowly than size⁻³.
+constexpr double kFirstSlope = -2.0;
+
+double mean_wall_edge_mm(const WallModel& wall, const std::vector<Eigen::Vector3d>& x_wall) {
+  double sum = 0.0;
+  for (const auto& t : wall.triangles)
+    for (int k = 0; k < 3; ++k) sum += (x_wall[t[k]] - x_wall[t[(k + 1) % 3]]).norm();
+  return 1e3 * sum / (3.0 * static_cast<double>(wall.triangle_count()));
+}
+
+}  // namespace
+
+FluidMesh cavity_tetrahedra_of_count(const WallModel& wall,
+                                     const std::vector<Eigen::Vector3d>& x_wall, std::size_t target,
+                                     double tolerance, double& size_mm) {
+  double size = size_mm > 0.0 ? size_mm : mean_wall_edge_mm(wall, x_wall);
+  FluidMesh best;
+  double best_error = INFINITY, slope = kFirstSlope;
+  double last_log_size = 0.0, last_log_count = 0.0;
+  for (int run = 0; run < kSizeSearchRuns; ++run) {
+    FluidMesh mesh = cavity_tetrahedra(wall, x_wall, size);
+    const double log_count = std::log(static_cast<double>(mesh.tets.size()));
+    const double log_ratio = log_count - std::log(static_cast<double>(target));
+    const double error = std::abs(std::expm1(log_ratio));
+    if (error < best_error) {
+      best_error = error;
+      best = std::move(mesh);
+      size_mm = size;
+    }
+    if (error <= tolerance) break;
+    if (run > 0 && std::abs(std::log(size) - last_log_size) > 1e-12) {
+      const double secant = (log_count - last_log_count) / (std::log(size) - last_log_size);
+      if (secant < -0.1) slope = secant;  // the count must fall as the size grows
+    }
+    last_log_size = std::log(size);
+    last_log_count = log_count;
+    size *= std::exp(-log_ratio / slope);
+  }
+  return best;
 }
 
 }  // namespace vesica::simulate::fluid

@@ -1,12 +1,21 @@
 #include "fluid/FluidProblem.h"
 
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "fluid/StabilizedTet.h"
 
 namespace vesica::simulate::fluid {
+namespace {
+
+// Tetrahedra from which the element loop is shared by two threads.
+constexpr std::size_t kTetsPerThread = 4000;
+
+}  // namespace
 
 FluidProblem::FluidProblem(const FluidMesh& mesh, const FluidBoundary& boundary,
                            const FluidProperties& fluid)
@@ -80,45 +89,36 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
                             double inverse_dt, Eigen::VectorXd& residual,
                             Eigen::SparseMatrix<double>* jacobian, const AleFrame* frame) const {
   const std::vector<Eigen::Vector3d>& x = frame ? frame->positions : mesh_.nodes;
-  residual = Eigen::VectorXd::Zero(dof_count());
-  std::vector<Eigen::Triplet<double>> triplets;
-  if (jacobian) triplets.reserve(mesh_.tets.size() * 256);
+  // The element loop on both cores: two fixed halves of the tets (not a shared counter),
+  // so that the sums, and so the results, do not depend on the threads' timing. Small
+  // meshes stay on one thread, where starting one costs more than it saves.
+  const std::size_t n = mesh_.tets.size();
+  const std::size_t half = n >= kTetsPerThread ? n / 2 : n;
+  ElementShare first, second;
+  std::exception_ptr second_error;
+  std::thread worker([&] {
+    try {
+      assemble_elements(half, n, x, state, state_old, inverse_dt, jacobian, frame, second);
+    } catch (...) {
+      second_error = std::current_exception();
+    }
+  });
+  try {
+    assemble_elements(0, half, x, state, state_old, inverse_dt, jacobian, frame, first);
+  } catch (...) {
+    worker.join();
+    throw;
+  }
+  worker.join();
+  if (second_error) std::rethrow_exception(second_error);
+  residual = std::move(first.residual);
+  residual += second.residual;
+  std::vector<Eigen::Triplet<double>> triplets = std::move(first.triplets);
+  triplets.insert(triplets.end(), second.triplets.begin(), second.triplets.end());
+  second.triplets = {};
   // Rows of constrained dofs become (U_i − Ū_i) scaled like a typical diagonal entry, so
   // the matrix stays well conditioned.
-  double diagonal_scale = 0.0;
-
-  TetState s;
-  TetVector r_e;
-  TetMatrix k_e;
-  for (const auto& tet : mesh_.tets) {
-    for (int a = 0; a < 4; ++a) {
-      const int dof = kDofsPerNode * tet[a];
-      s.x[a] = x[tet[a]];
-      s.w_mesh[a] = frame ? frame->mesh_velocity[tet[a]] : Eigen::Vector3d::Zero();
-      s.mesh_follows[a] = frame && !frame->mesh_follows.empty() && frame->mesh_follows[tet[a]];
-      s.u[a] = state.segment<3>(dof);
-      s.p[a] = state[dof + 3];
-      s.u_old[a] = state_old.segment<3>(dof);
-    }
-    stabilized_tet(s, fluid_, inverse_dt, r_e, jacobian ? &k_e : nullptr);
-    for (int a = 0; a < 4; ++a) {
-      for (int i = 0; i < kDofsPerNode; ++i) {
-        const int row = kDofsPerNode * tet[a] + i;
-        residual[row] += r_e[kDofsPerNode * a + i];
-        if (!jacobian || constrained_[row]) continue;
-        diagonal_scale = std::max(diagonal_scale, std::abs(k_e(4 * a + i, 4 * a + i)));
-        // Columns of constrained dofs are left out: their increments are zero once the
-        // state satisfies the conditions (apply_constraints), and the matrix keeps a
-        // symmetric pattern, which UMFPACK factorizes with less fill.
-        for (int b = 0; b < 4; ++b)
-          for (int j = 0; j < kDofsPerNode; ++j) {
-            const int col = kDofsPerNode * tet[b] + j;
-            if (!constrained_[col])
-              triplets.emplace_back(row, col, k_e(kDofsPerNode * a + i, kDofsPerNode * b + j));
-          }
-      }
-    }
-  }
+  double diagonal_scale = std::max(first.diagonal_scale, second.diagonal_scale);
   // Traction −p̄ n: the weak form's −∫ w·t̄ = +p̄ ∫ N_a n, i.e. p̄ A n / 3 per corner.
   for (size_t f = 0; f < boundary_.pressure_faces.size(); ++f) {
     const auto& face = boundary_.pressure_faces[f];
@@ -136,6 +136,51 @@ void FluidProblem::assemble(const Eigen::VectorXd& state, const Eigen::VectorXd&
   if (jacobian) {
     jacobian->resize(dof_count(), dof_count());
     jacobian->setFromTriplets(triplets.begin(), triplets.end());
+  }
+}
+
+void FluidProblem::assemble_elements(std::size_t begin, std::size_t end,
+                                     const std::vector<Eigen::Vector3d>& x,
+                                     const Eigen::VectorXd& state, const Eigen::VectorXd& state_old,
+                                     double inverse_dt, bool with_jacobian, const AleFrame* frame,
+                                     ElementShare& out) const {
+  Eigen::VectorXd& residual = out.residual;
+  residual = Eigen::VectorXd::Zero(dof_count());
+  std::vector<Eigen::Triplet<double>>& triplets = out.triplets;
+  if (with_jacobian) triplets.reserve((end - begin) * 256);
+  double& diagonal_scale = out.diagonal_scale;
+  TetState s;
+  TetVector r_e;
+  TetMatrix k_e;
+  for (std::size_t t = begin; t < end; ++t) {
+    const auto& tet = mesh_.tets[t];
+    for (int a = 0; a < 4; ++a) {
+      const int dof = kDofsPerNode * tet[a];
+      s.x[a] = x[tet[a]];
+      s.w_mesh[a] = frame ? frame->mesh_velocity[tet[a]] : Eigen::Vector3d::Zero();
+      s.mesh_follows[a] = frame && !frame->mesh_follows.empty() && frame->mesh_follows[tet[a]];
+      s.u[a] = state.segment<3>(dof);
+      s.p[a] = state[dof + 3];
+      s.u_old[a] = state_old.segment<3>(dof);
+    }
+    stabilized_tet(s, fluid_, inverse_dt, r_e, with_jacobian ? &k_e : nullptr);
+    for (int a = 0; a < 4; ++a) {
+      for (int i = 0; i < kDofsPerNode; ++i) {
+        const int row = kDofsPerNode * tet[a] + i;
+        residual[row] += r_e[kDofsPerNode * a + i];
+        if (!with_jacobian || constrained_[row]) continue;
+        diagonal_scale = std::max(diagonal_scale, std::abs(k_e(4 * a + i, 4 * a + i)));
+        // Columns of constrained dofs are left out: their increments are zero once the
+        // state satisfies the conditions (apply_constraints), and the matrix keeps a
+        // symmetric pattern, which UMFPACK factorizes with less fill.
+        for (int b = 0; b < 4; ++b)
+          for (int j = 0; j < kDofsPerNode; ++j) {
+            const int col = kDofsPerNode * tet[b] + j;
+            if (!constrained_[col])
+              triplets.emplace_back(row, col, k_e(kDofsPerNode * a + i, kDofsPerNode * b + j));
+          }
+      }
+    }
   }
 }
 

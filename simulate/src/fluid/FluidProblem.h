@@ -42,6 +42,17 @@ class FluidProblem {
                 const AleFrame* frame = nullptr) const;
 
  private:
+  // The element part of assemble() over tets [begin, end): its residual, triplets and
+  // largest free diagonal entry.
+  struct ElementShare {
+    Eigen::VectorXd residual;
+    std::vector<Eigen::Triplet<double>> triplets;
+    double diagonal_scale = 0.0;
+  };
+  void assemble_elements(std::size_t begin, std::size_t end, const std::vector<Eigen::Vector3d>& x,
+                         const Eigen::VectorXd& state, const Eigen::VectorXd& state_old,
+                         double inverse_dt, bool with_jacobian, const AleFrame* frame,
+                         ElementShare& out) const;
   void add_outlet(const Eigen::VectorXd& state, const std::vector<Eigen::Vector3d>& x,
                   Eigen::VectorXd& residual, std::vector<Eigen::Triplet<double>>* triplets) const;
 

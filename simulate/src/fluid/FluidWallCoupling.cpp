@@ -1,6 +1,7 @@
 #include "fluid/FluidWallCoupling.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <set>
@@ -12,6 +13,7 @@
 #include "LinearSolver.h"
 #include "PressureLoad.h"
 #include "fluid/CavityTetrahedra.h"
+#include "fluid/DivergenceFreeProjection.h"
 #include "fluid/FluidProblem.h"
 #include "fluid/MeshMotion.h"
 #include "fluid/MeshTransfer.h"
@@ -44,10 +46,8 @@ struct FluidWallCoupling::Unknowns {
   FluidProblem problem;
   std::vector<int> index;  // urine dof -> z, −1 = not an unknown (fixed wall dof)
   std::vector<bool> is_wall_velocity;
+  std::vector<int> pressures, velocities;  // z of the urine pressures and free velocities
   int wall_free = 0, count = 0;
-  // Sparse LU of the coupled Jacobian; its pattern is analyzed once, since it is fixed until
-  // the unknowns change (the outlet opens, the urine is remeshed: new Unknowns).
-  LinearSolver lu{LinearSolver::Symmetry::Unsymmetric};
 };
 
 namespace {
@@ -88,11 +88,13 @@ Eigen::Vector3d corner_area_normal(const std::array<int, 3>& t,
 }  // namespace
 
 FluidWallCoupling::FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mesh,
-                                     const FluidProperties& fluid, const NewtonOptions& options)
+                                     const FluidProperties& fluid, const NewtonOptions& options,
+                                     Level2LinearSolver linear_solver)
     : wall_(wall),
       mesh_(mesh),
       fluid_(fluid),
-      loop_(options, ElasticFoundation(wall, options.foundation)) {
+      loop_(options, ElasticFoundation(wall, options.foundation)),
+      solver_(linear_solver) {
   const std::size_t n_wall = wall.wall().node_count();
   if (mesh.nodes.size() <= n_wall) throw std::invalid_argument("tet mesh has no interior node");
   for (std::size_t i = 0; i < n_wall; ++i)
@@ -123,22 +125,29 @@ void FluidWallCoupling::build_unknowns() {
   u.wall_free = static_cast<int>(wall_.free_dof_count());
   u.index.assign(u.problem.dof_count(), -1);
   u.is_wall_velocity.assign(u.problem.dof_count(), false);
+  u.pressures.clear();
+  u.velocities.clear();
   int next = u.wall_free;
+  auto add = [&](int dof, bool pressure) {
+    (pressure ? u.pressures : u.velocities).push_back(next);
+    u.index[dof] = next++;
+  };
   for (int i = n_wall; i < n; ++i)
-    for (int k = 0; k < kDofsPerNode; ++k) u.index[kDofsPerNode * i + k] = next++;
+    for (int k = 0; k < kDofsPerNode; ++k) add(kDofsPerNode * i + k, k == 3);
   for (int i = 0; i < n_wall; ++i) {
     for (int k = 0; k < 3; ++k) {
       if (free_urine[i]) {
-        u.index[kDofsPerNode * i + k] = next++;
+        add(kDofsPerNode * i + k, false);
         continue;
       }
       u.index[kDofsPerNode * i + k] = wall_.dof_map()[3 * i + k];
       u.is_wall_velocity[kDofsPerNode * i + k] = true;
     }
-    u.index[kDofsPerNode * i + 3] = next++;
+    add(kDofsPerNode * i + 3, true);
   }
-  if (u.problem.has_outlet()) u.index[u.problem.node_dof_count()] = next++;
+  if (u.problem.has_outlet()) add(u.problem.node_dof_count(), true);
   u.count = next;
+  solver_.reset();  // a new pattern
 }
 
 void FluidWallCoupling::set_wall_velocities(const std::vector<Eigen::Vector3d>& x_wall, double dt,
@@ -352,6 +361,14 @@ class FluidWallCoupling::System final : public NewtonSystem {
   // The coupled residual and Jacobian at the current state; throws std::runtime_error when
   // an element or the mesh fails.
   void evaluate() override {
+    const auto start = std::chrono::steady_clock::now();
+    struct Lap {
+      std::chrono::steady_clock::time_point start;
+      double& total;
+      ~Lap() {
+        total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      }
+    } lap{start, c_.assemble_s_};
     c_.set_wall_velocities(x_wall_, dt_, inflow_);
     c_.move_wall_nodes(x_wall_);
     Unknowns& u = *c_.unknowns_;
@@ -381,19 +398,9 @@ class FluidWallCoupling::System final : public NewtonSystem {
 
   Eigen::SparseMatrix<double>& tangent() override { return jacobian_; }
 
-  bool solve_increment(bool /*reuse: a fresh Jacobian every iteration*/,
-                       std::string& failure) override {
-    LinearSolver& lu = c_.unknowns_->lu;
-    if (!lu.factorize(jacobian_)) {
-      failure = "could not factorize the coupled Jacobian";
-      return false;
-    }
-    dz_ = -lu.solve(residual_).col(0);
-    if (!dz_.allFinite()) {
-      failure = "non-finite Newton increment";
-      return false;
-    }
-    return true;
+  // The linear solver decides itself when to reuse its factors (CoupledLinearSolver.h).
+  bool solve_increment(bool /*reuse*/, std::string& failure) override {
+    return c_.solver_.solve(jacobian_, residual_, unknown_scale(), dz_, failure);
   }
 
   double increment_move() const override { return max_abs(dz_.head(c_.unknowns_->wall_free)); }
@@ -410,6 +417,22 @@ class FluidWallCoupling::System final : public NewtonSystem {
   }
 
  private:
+  // The size of each kind of unknown, for the linear solver's scaling: in the ratio of the
+  // convergence tests (positions to increment_tolerance of the wall's size, pressures to
+  // pressure_tolerance of their scale), velocities as positions per Δt.
+  Eigen::VectorXd unknown_scale() const {
+    const Unknowns& u = *c_.unknowns_;
+    const NewtonOptions& o = c_.loop_.options();
+    const Eigen::VectorXd& state = c_.state_;
+    const double p_scale =
+        std::max(1.0, max_abs(state(Eigen::seqN(3, state.size() / kDofsPerNode, kDofsPerNode))));
+    const double position = o.increment_tolerance * size_;
+    Eigen::VectorXd scale = Eigen::VectorXd::Constant(u.count, position);
+    for (int z : u.velocities) scale[z] = position / dt_;
+    for (int z : u.pressures) scale[z] = o.pressure_tolerance * p_scale;
+    return scale;
+  }
+
   FluidWallCoupling& c_;
   const double dt_;
   const WallLoads& loads_;
@@ -443,7 +466,7 @@ NewtonReport FluidWallCoupling::step(double dt, const WallLoads& loads_in, const
     // A converged state with an inverted urine tetrahedron (the wall folded into the
     // urine) is not a solution: fail, so that the caller cuts the step back.
     report.converged = false;
-    report.failure = "a urine tetrahedron inverted";
+    report.failure = kInvertedTet;
   }
   if (!report.converged) {
     // Back to the committed step, so that the caller may retry with a smaller Δt.
@@ -594,16 +617,41 @@ Eigen::VectorXd transferred_state(const Eigen::VectorXd& old_state, std::size_t 
 int FluidWallCoupling::remesh(double max_size_mm) {
   const std::size_t n_wall = wall_.wall().node_count();
   const std::vector<Eigen::Vector3d> x_wall(x_.begin(), x_.begin() + static_cast<long>(n_wall));
-  FluidMesh fresh = cavity_tetrahedra(wall_.wall(), x_wall, max_size_mm);
+  replace_tetrahedra(cavity_tetrahedra(wall_.wall(), x_wall, max_size_mm));
+  return static_cast<int>(mesh_.tets.size());
+}
+
+int FluidWallCoupling::remesh_matched(std::size_t target_tets, double tolerance) {
+  const std::size_t n_wall = wall_.wall().node_count();
+  const std::vector<Eigen::Vector3d> x_wall(x_.begin(), x_.begin() + static_cast<long>(n_wall));
+  // The last search's size, scaled with the volume since, is the next search's start.
+  if (remesh_size_mm_ > 0.0) remesh_size_mm_ *= std::cbrt(fluid_volume() / remesh_volume_);
+  FluidMesh fresh =
+      cavity_tetrahedra_of_count(wall_.wall(), x_wall, target_tets, tolerance, remesh_size_mm_);
+  replace_tetrahedra(std::move(fresh));
+  remesh_volume_ = fluid_volume();
+  return static_cast<int>(mesh_.tets.size());
+}
+
+// Where the urine velocity is given (no projection unknown): the wall nodes, which move
+// with the wall or are held (the inflow patch), but not the open outlet's inner nodes.
+std::vector<bool> FluidWallCoupling::given_velocities() const {
+  std::vector<bool> given(mesh_.nodes.size(), false);
+  for (std::size_t i = 0; i < wall_.wall().node_count(); ++i)
+    given[i] = unknowns_->is_wall_velocity[kDofsPerNode * i];
+  return given;
+}
+
+void FluidWallCoupling::replace_tetrahedra(FluidMesh fresh) {
+  const std::size_t n_wall = wall_.wall().node_count();
   // Interpolating the modified pressure p̃ is the same as interpolating p: they differ by
   // a field linear in x, which P1 carries exactly.
   const std::vector<Eigen::Vector3d> interior_nodes(fresh.nodes.begin() + static_cast<long>(n_wall),
                                                     fresh.nodes.end());
   const std::vector<TetLocation> where = locate_points(x_, mesh_.tets, interior_nodes);
-  const Eigen::VectorXd state =
+  // At a committed step the state at t_n is the state now: one transfer serves both.
+  Eigen::VectorXd state =
       transferred_state(state_, n_wall, fresh.nodes.size(), outlet_open(), mesh_.tets, where);
-  const Eigen::VectorXd state_old =
-      transferred_state(state_old_, n_wall, fresh.nodes.size(), outlet_open(), mesh_.tets, where);
   // The new mesh is the reference from now on: the mesh motion's displacement is
   // x_wall − mesh_.nodes[wall], zero at the current wall, as it must be.
   mesh_ = std::move(fresh);
@@ -611,9 +659,10 @@ int FluidWallCoupling::remesh(double max_size_mm) {
   motion_ = std::make_unique<HarmonicMeshMotion>(mesh_, wall_flags(mesh_.nodes.size(), n_wall));
   unknowns_ = std::make_unique<Unknowns>(mesh_, outlet_boundary(), fluid_);
   build_unknowns();
-  state_ = state;
-  state_old_ = state_old;
-  return static_cast<int>(mesh_.tets.size());
+  state_ = divergence_free_projection(
+      mesh_, fluid_, state, given_velocities(),
+      outlet_open() ? outlet_->faces : std::vector<std::array<int, 3>>{});
+  state_old_ = state_;
 }
 
 void FluidWallCoupling::set_state(const Eigen::VectorXd& state) {

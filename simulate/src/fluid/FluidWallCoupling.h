@@ -28,6 +28,7 @@
 #include "MembraneProblem.h"
 #include "NewtonLoop.h"
 #include "PressureLoad.h"
+#include "fluid/CoupledLinearSolver.h"
 #include "fluid/FluidBoundary.h"
 #include "fluid/FluidModel.h"
 #include "fluid/MeshMotion.h"
@@ -44,6 +45,9 @@ struct Inflow {
   double flow_rate = 0.0;
 };
 
+// The failure of a step whose converged state inverted a urine tetrahedron.
+inline constexpr const char* kInvertedTet = "a urine tetrahedron inverted";
+
 // The fan of wall triangles around one node: an inlet reduced to a single node.
 Inflow inflow_at_node(const WallModel& wall, int node, double flow_rate);
 
@@ -54,7 +58,8 @@ class FluidWallCoupling {
   // of mesh (remesh() replaces it).
   // Throws std::invalid_argument when the mesh does not start with the wall nodes.
   FluidWallCoupling(MembraneProblem& wall, const FluidMesh& mesh, const FluidProperties& fluid,
-                    const NewtonOptions& options = coupled_newton_options());
+                    const NewtonOptions& options = coupled_newton_options(),
+                    Level2LinearSolver linear_solver = Level2LinearSolver::Krylov);
   ~FluidWallCoupling();
 
   // One backward-Euler step of dt (s). loads: the wall's loads without the urine
@@ -95,17 +100,28 @@ class FluidWallCoupling {
   const FluidMesh& mesh() const { return mesh_; }
   // Rebuilds the tetrahedra from the wall at its current positions with gmsh (the wall
   // nodes stay nodes 0..N−1), when the moving ones have degraded (docs/navier-stokes.md
-  // §1). The urine state (now and at t_n) moves to the new nodes by P1 interpolation in the
-  // old tetrahedra; the wall, its velocities and the outlet stay. Call between steps.
+  // §1). The urine velocity moves to the new nodes by P1 interpolation in the old
+  // tetrahedra and is then projected onto the new mesh's divergence-free velocities
+  // (DivergenceFreeProjection.h), the pressure by interpolation; the wall, its velocities
+  // and the outlet stay. Call between steps (the state at t_n is the state now).
   // max_size_mm: longest new tet edge (0 = the current wall's mean edge). Returns the new
   // tetrahedron count; throws vesica::Error when gmsh fails (the old mesh then stays).
   int remesh(double max_size_mm = 0.0);
+  // The same with about target_tets tetrahedra (within the relative tolerance; the closest
+  // count gmsh gave in a few runs otherwise), the resolution of the mesh it replaces.
+  int remesh_matched(std::size_t target_tets, double tolerance);
   // Sets the urine state, now and at t_n (size and units as state()), e.g. an initial flow.
   void set_state(const Eigen::VectorXd& state);
   // Volume of the tetrahedra at the current positions (m³).
   double fluid_volume() const;
   // ½ ∫ ρ |u|² with the P1 mass lumped (V_e/4 per corner), J.
   double fluid_kinetic_energy() const;
+  // What the linear solves cost so far (CoupledLinearSolver.h).
+  nlohmann::json linear_solver_statistics() const {
+    nlohmann::json s = solver_.json();
+    s["assemble_s"] = assemble_s_;
+    return s;
+  }
 
  private:
   struct Unknowns;
@@ -118,6 +134,8 @@ class FluidWallCoupling {
   void move_wall_nodes(const std::vector<Eigen::Vector3d>& x_wall);  // interior stays
   WallLoads step_loads(double dt, const WallLoads& loads_in, const Inflow& inflow) const;
   double apply_urine_increment(const Eigen::VectorXd& dz);  // returns max |Δp|
+  void replace_tetrahedra(FluidMesh fresh);                 // transfer and projection of the state
+  std::vector<bool> given_velocities() const;
   void commit(double dt, const WallLoads& loads, const std::vector<Eigen::Vector3d>& x_wall,
               const Inflow& inflow);
 
@@ -125,6 +143,7 @@ class FluidWallCoupling {
   FluidMesh mesh_;
   FluidProperties fluid_;
   NewtonLoop loop_;
+  CoupledLinearSolver solver_;
   std::unique_ptr<Unknowns> unknowns_;
   HydrostaticPressure hydrostatic_part() const;  // ρ g·(x − x_h), the wall load it makes
 
@@ -134,6 +153,9 @@ class FluidWallCoupling {
   std::vector<Eigen::Vector3d> x_, x_old_;  // tet node positions now and at t_n
   std::vector<Eigen::Vector3d> wall_velocity_;
   Eigen::VectorXd state_, state_old_;
+  double assemble_s_ = 0.0;  // wall-clock seconds in the coupled assembly
+  // The longest edge of the last size-matched remesh (mm) and the volume then (m³).
+  double remesh_size_mm_ = 0.0, remesh_volume_ = 1.0;
 };
 
 }  // namespace vesica::simulate::fluid

@@ -19,8 +19,10 @@
 namespace vesica::simulate::fluid {
 namespace {
 
-// Below this radius ratio the ALE mesh is rebuilt (docs/navier-stokes.md §1).
+// Below this radius ratio the ALE mesh is rebuilt (docs/navier-stokes.md §1), with the
+// tetrahedron count of the mesh read within this fraction.
 constexpr double kRemeshRadiusRatio = 0.1;
+constexpr double kRemeshCountTolerance = 0.1;
 // Cut-backs of a failed step (each halves it), and frames while voiding.
 constexpr int kMaxCutbacks = 5;
 constexpr double kVoidFrameIntervalS = 0.5;
@@ -72,7 +74,8 @@ NavierStokesCavity::NavierStokesCavity(const WallModel& wall, const FluidMesh& u
   fluid_.density = settings.urine_density;
   fluid_.viscosity = options.level2.urine_viscosity;
   fluid_.gravity = gravity_;
-  coupling_ = std::make_unique<FluidWallCoupling>(problem_, urine, fluid_, options.level2.newton);
+  coupling_ = std::make_unique<FluidWallCoupling>(problem_, urine, fluid_, options.level2.newton,
+                                                  options.level2.linear_solver);
   built_quality_ = mesh_quality();
   initial_tets_ = urine.tets.size();
   initial_nodes_ = urine.nodes.size();
@@ -101,6 +104,7 @@ StepRules NavierStokesCavity::rules() const {
 }
 
 double NavierStokesCavity::volume() const {
+  if (collapse_) return collapse_->volume();
   return settler_ ? settler_->volume() : coupling_->fluid_volume();
 }
 
@@ -125,12 +129,15 @@ void NavierStokesCavity::start_clock() {
                          units::ml_from_m3(volume()), units::cmh2o_from_pa(settler_->pves()));
     settler_.reset();
   }
+  V_start_ = coupling_->fluid_volume();
+  committed_loads_.pabd_pa = units::pa_from_cmh2o(settings_.pabd_cmh2o);
   update_max_speed();
 }
 
 // Pves: the urine pressure at the reference point (bladder neck) without the flow's
 // dynamic part, i.e. the wall-area mean of p − ρ g·(x − x_ref) (exact for urine at rest).
 double NavierStokesCavity::pves() const {
+  if (collapse_) return collapse_->pves();
   if (settler_) return settler_->pves();
   const auto& x = coupling_->positions();
   const auto& area = problem_.node_areas();
@@ -159,18 +166,30 @@ WallLoads NavierStokesCavity::step_loads(const StepRequest& step) const {
 }
 
 StepResult NavierStokesCavity::try_step(const StepRequest& step) {
+  if (collapse_) return collapse_->try_step(step);
   // The urethra opens once the pressure at the neck reaches the opening pressure.
   if (step.urethra && !coupling_->outlet_open() && pves() >= step.urethra->opening_pressure())
     open_urethra(*step.urethra, step.end_time_s - step.dt_s);
   const auto start = std::chrono::steady_clock::now();
   inflow_.flow_rate = step.inflow_m3_s;
   const WallLoads loads = step_loads(step);
-  const NewtonReport r =
-      coupling_->step(step.dt_s, loads, step.inflow_m3_s > 0.0 ? inflow_ : Inflow{});
+  const Inflow inflow = step.inflow_m3_s > 0.0 ? inflow_ : Inflow{};
+  NewtonReport r = coupling_->step(step.dt_s, loads, inflow);
+  // The wall moved further than the tetrahedra can follow: new ones from the wall where
+  // the step started, and the same step again (before any cut-back).
+  if (!r.converged && r.failure == kInvertedTet &&
+      remesh(step.end_time_s - step.dt_s, mesh_quality())) {
+    statistics_.iterations += r.iterations;
+    r = coupling_->step(step.dt_s, loads, inflow);
+  }
   step_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   statistics_.iterations += r.iterations;
   StepResult result;
   result.iterations = r.iterations;
+  if (!r.converged && can_hand_over(step)) {
+    hand_over(step, r.failure);
+    return collapse_->try_step(step);
+  }
   if (!r.converged) {
     ++statistics_.cutbacks;
     result.failure = r.failure;
@@ -179,6 +198,7 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   }
   statistics_.converged_step(r.iterations);
   last_loads_ = loads;
+  committed_loads_ = step.loads;
   result.converged = true;
   // Backward Euler: the tetrahedra lost exactly Q(t_{n+1}) dt through the outlet.
   result.voided_m3 = coupling_->outflow() * step.dt_s;
@@ -193,9 +213,35 @@ void NavierStokesCavity::open_urethra(const UrethraLaw& urethra, double time_s) 
                        units::cmh2o_from_pa(pves()));
 }
 
-// Below its stress-free volume the wall is slack and folds; without a wrinkling model the
-// folds run into the urine mesh. The voiding so far stands.
+// Below its stress-free volume the slack wall folds into the urine mesh: the tetrahedra
+// can no longer fill the space the wall encloses (a fold turns them inside out, gmsh
+// refuses the self-touching wall). There the urine moves slowly and is close to
+// hydrostatic, and level 1 on the same wall (its wrinkling membrane, its hydrostatic
+// urine, the same urethra law) continues the voiding from level 2's state: the wall, its
+// history, the pressure, the outflow and the volume bookkeeping (docs/navier-stokes.md §8).
+bool NavierStokesCavity::can_hand_over(const StepRequest& step) const {
+  return step.urethra && coupling_->outlet_open() && volume() < V_reference_;
+}
+
+void NavierStokesCavity::hand_over(const StepRequest& step, const std::string& failure) {
+  const double V = coupling_->fluid_volume();
+  auto level1 = std::make_unique<HydrostaticCavity>(wall_, material_, settings_, options_);
+  level1->continue_from(wall_positions(), problem_, {pves(), coupling_->outflow(), V_start_},
+                        committed_loads_);
+  collapse_ = std::move(level1);
+  collapse_time_s_ = step.end_time_s - step.dt_s;
+  collapse_volume_ = V;
+  notes_.push_back("level 2 voided to " + std::to_string(units::ml_from_m3(V)) +
+                   " ml, below the stress-free volume, where the slack wall folds into the "
+                   "urine mesh (" +
+                   failure + "); level 1 continued the voiding from there");
+  vesica::log()->info("{}", notes_.back());
+}
+
 std::string NavierStokesCavity::voiding_end_note(const std::string& failure) const {
+  if (collapse_)
+    return "voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
+           " ml, where level 1 could not follow the slack wall further (" + failure + ")";
   if (volume() > V_reference_) return "";
   return "level-2 voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
          " ml, below the stress-free volume, where the slack wall folds into the urine mesh (" +
@@ -217,24 +263,32 @@ void NavierStokesCavity::check_mesh(double time_s) {
   min_quality_ = std::min(min_quality_, q);
   const double threshold =
       built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
-  // Not while the urethra is open: on a patient bladder, voiding after a remesh stalled
-  // in failing Newton attempts (the new mesh's outlet region is coarser than the flow
-  // through it); the voiding meshes so far keep their quality above zero.
-  if (remesh_failed_ || q >= threshold || coupling_->outlet_open()) return;
+  if (q >= threshold) return;
+  remesh(time_s, q);
+}
+
+// Size-matched: as many tetrahedra as the mesh read had (kRemeshCountTolerance). A wall
+// gmsh cannot mesh keeps the old tetrahedra with a note; the next remesh is tried only
+// once the quality has fallen to half of that attempt's, so that such a wall does not
+// cost a failed gmsh run at every step.
+bool NavierStokesCavity::remesh(double time_s, double quality) {
+  if (quality >= failed_remesh_quality_) return false;
   try {
-    const int tets = coupling_->remesh();
+    const int tets = coupling_->remesh_matched(initial_tets_, kRemeshCountTolerance);
     ++remeshes_;
     built_quality_ = mesh_quality();
+    failed_remesh_quality_ = INFINITY;
     vesica::log()->info(
         "level 2: urine remeshed at t = {} s (radius ratio {:.3f} -> {:.3f}, {} tetrahedra)",
-        time_s, q, built_quality_, tets);
+        time_s, quality, built_quality_, tets);
+    return true;
   } catch (const std::exception& e) {
-    // The old tetrahedra stay; no retry, so that a wall gmsh cannot mesh (e.g. folded
-    // into itself) does not cost a failed gmsh run at every step.
-    remesh_failed_ = true;
-    notes_.push_back("urine remeshing failed at radius ratio " + std::to_string(q) + " (" +
-                     e.what() + "); the degraded tetrahedra stay");
+    failed_remesh_quality_ = 0.5 * quality;
+    notes_.push_back("urine remeshing failed at t = " + std::to_string(time_s) +
+                     " s, radius ratio " + std::to_string(quality) + " (" + e.what() +
+                     "); the degraded tetrahedra stay");
     vesica::log()->warn("{}", notes_.back());
+    return false;
   }
 }
 
@@ -245,11 +299,13 @@ void NavierStokesCavity::update_max_speed() {
 }
 
 std::vector<Eigen::Vector3d> NavierStokesCavity::wall_positions() const {
+  if (collapse_) return collapse_->wall_positions();
   const auto& x = coupling_->positions();
   return {x.begin(), x.begin() + static_cast<long>(wall_.node_count())};
 }
 
 std::vector<MembraneStressOutput> NavierStokesCavity::wall_stresses() const {
+  if (collapse_) return collapse_->wall_stresses();
   return problem_.element_outputs(wall_positions(), last_loads_);
 }
 
@@ -272,6 +328,7 @@ std::vector<Eigen::Vector3d> NavierStokesCavity::nodal_wall_shear(const FluidMes
 }
 
 void NavierStokesCavity::add_frame(double time_s, bool write) {
+  if (collapse_) return;  // no urine tetrahedra any more: the wall's frames go on
   const FluidMesh now = coupling_->current_mesh();
   const std::vector<Eigen::Vector3d> shear = nodal_wall_shear(now);
   for (std::size_t i = 0; i < wall_.node_count(); ++i)
@@ -290,6 +347,8 @@ std::vector<std::string> NavierStokesCavity::take_notes() {
 nlohmann::json NavierStokesCavity::statistics() const {
   nlohmann::json s = statistics_.json();
   s["seconds_per_step"] = statistics_.steps ? step_seconds_ / statistics_.steps : 0.0;
+  s["linear_solver"] = coupling_->linear_solver_statistics();
+  if (collapse_) s["level1_below_stress_free"] = collapse_->statistics();
   return s;
 }
 
@@ -302,6 +361,9 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["max_wall_shear_pa"] = max_shear_;
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
+  s["level1_from"] = collapse_ ? nlohmann::json{{"time_s", collapse_time_s_},
+                                                {"volume_ml", units::ml_from_m3(collapse_volume_)}}
+                               : nlohmann::json(nullptr);
   s["time_steps_s"] = {{"filling", options_.level2.fill_dt_s},
                        {"voiding", options_.level2.void_dt_s}};
 }

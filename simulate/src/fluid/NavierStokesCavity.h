@@ -10,10 +10,13 @@
 // Settling to the start volume is quasi-static, by level 1 (urine at rest is hydrostatic,
 // so both levels agree there), whose solver handles the slack wall of a scaled-down
 // patient shape; the flow starts from that taut wall at rest. The tetrahedra are rebuilt
-// (gmsh) when they degrade. Its own outputs: fluid.pvd (velocity, pressure, wall shear)
-// and the summary keys level, tetrahedra, max_velocity_mm_s, max_wall_shear_pa,
-// min_tet_radius_ratio, remeshes, newton.seconds_per_step, time_steps_s.
+// (gmsh) when they degrade. Below the stress-free volume, where the slack wall folds into
+// the urine mesh and a voiding step fails, level 1 continues the voiding from level 2's
+// state (docs/navier-stokes.md §8). Its own outputs: fluid.pvd (velocity, pressure, wall
+// shear) and the summary keys level, tetrahedra, max_velocity_mm_s, max_wall_shear_pa,
+// min_tet_radius_ratio, remeshes, level1_from, newton.seconds_per_step, time_steps_s.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -49,7 +52,9 @@ class NavierStokesCavity final : public CavityModel {
 
   double volume() const override;
   double pves() const override;
-  double outflow() const override { return coupling_->outflow(); }
+  double outflow() const override {
+    return collapse_ ? collapse_->outflow() : coupling_->outflow();
+  }
   double reference_volume() const override { return V_reference_; }
   const WallModel& wall() const override { return wall_; }
   std::vector<Eigen::Vector3d> wall_positions() const override;
@@ -60,13 +65,18 @@ class NavierStokesCavity final : public CavityModel {
   void add_frame(double time_s, bool write) override;
   void finish_frames() override;
   std::vector<std::string> take_notes() override;
-  std::string progress_label() const override { return " (level 2)"; }
+  std::string progress_label() const override {
+    return collapse_ ? " (level 1 below the stress-free volume)" : " (level 2)";
+  }
 
  private:
   WallLoads step_loads(const StepRequest& step) const;
   void open_urethra(const UrethraLaw& urethra, double time_s);
   double mesh_quality() const;
   void check_mesh(double time_s);
+  bool remesh(double time_s, double quality);  // true when the tetrahedra were rebuilt
+  bool can_hand_over(const StepRequest& step) const;
+  void hand_over(const StepRequest& step, const std::string& failure);
   void update_max_speed();
   std::vector<Eigen::Vector3d> nodal_wall_shear(const FluidMesh& now) const;
 
@@ -79,6 +89,12 @@ class NavierStokesCavity final : public CavityModel {
   FluidProperties fluid_;
   std::unique_ptr<FluidWallCoupling> coupling_;
   std::unique_ptr<HydrostaticCavity> settler_;  // level 1, while settling to the start volume
+  // Level 1, continuing the voiding where the slack wall folds into the urine mesh below
+  // the stress-free volume (docs/navier-stokes.md §8); null before.
+  std::unique_ptr<HydrostaticCavity> collapse_;
+  ProtocolLoads committed_loads_;  // the protocol's loads of the last converged step
+  double V_start_ = 0.0;           // urine volume when the clock started (m³)
+  double collapse_time_s_ = -1.0, collapse_volume_ = 0.0;  // of the hand-over
   Inflow inflow_;
   std::vector<std::array<int, 3>> outlet_faces_;
   WallLoads last_loads_;  // of the last converged step
@@ -91,7 +107,8 @@ class NavierStokesCavity final : public CavityModel {
   StepStatistics statistics_;
   int remeshes_ = 0;
   std::size_t initial_tets_ = 0, initial_nodes_ = 0;
-  bool remesh_failed_ = false;
+  // Quality below which a remesh is tried (INFINITY: any); after a failed one, half of its.
+  double failed_remesh_quality_ = INFINITY;
 };
 
 // The urine tetrahedra in the wall's reference state. `imaged`: as read (read_urine), its

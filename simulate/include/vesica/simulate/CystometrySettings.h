@@ -53,12 +53,21 @@ struct ProtocolSettings {
   double image_pressure_cmh2o = 10.0;
 };
 
+// How level 2 solves the linear system of each coupled Newton iteration
+// (docs/navier-stokes.md §7): a fresh sparse LU every time, or GMRES preconditioned by the
+// LU of an earlier Jacobian (Newton–Krylov, factorizations reused across steps).
+enum class Level2LinearSolver { Direct, Krylov };
+
 // Level 2: the urine as a Navier–Stokes flow on the tetrahedra of vesica-mesh --fluid,
 // solved together with the wall (docs/navier-stokes.md).
 struct Level2Options {
-  double fill_dt_s = 1.0;         // time step while filling and holding
+  // Time step while filling and holding (s); 0: the protocol's adaptive step (from half of
+  // RunOptions::max_fill_step_ml's time, growing after easy steps): the slow filling's urine
+  // is nearly steady, and backward Euler follows it in large steps.
+  double fill_dt_s = 1.0;
   double void_dt_s = 0.1;         // time step while voiding
   double urine_viscosity = 1e-3;  // Pa·s
+  Level2LinearSolver linear_solver = Level2LinearSolver::Krylov;
   // The coupled wall–urine Newton (increment tests, 40 iterations, no line search).
   NewtonOptions newton = coupled_newton_options();
 };
