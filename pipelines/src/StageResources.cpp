@@ -259,7 +259,10 @@ double level1_mb(double triangles) {
 // simulated time over the time step; voiding steps are shorter and their Newton harder.
 double level2_seconds(const PlannedStage& s, double tetrahedra, double fill_s, double void_s) {
   const double scale = std::pow(std::max(tetrahedra, 1.0) / 22205.0, 1.3);
-  const double fill_dt = number(s, "fluid_dt_s"), void_dt = number(s, "void_dt_s");
+  // fluid_dt_s 0 asks for adaptive filling steps: about 11 s of simulated time a step.
+  const double given_fill_dt = number(s, "fluid_dt_s");
+  const double fill_dt = given_fill_dt > 0.0 ? given_fill_dt : 11.0;
+  const double void_dt = number(s, "void_dt_s");
   return 10.0 + scale * (6.0 * fill_s / fill_dt + 3.7 * void_s / void_dt);
 }
 
