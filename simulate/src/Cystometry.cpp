@@ -6,6 +6,7 @@
 
 #include "CystometryProtocol.h"
 #include "HydrostaticCavity.h"
+#include "LumpedCavity.h"
 #include "PrestressReference.h"
 #include "fluid/NavierStokesCavity.h"
 #include "vesica/core/AtomicOutput.h"
@@ -54,7 +55,13 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
           "outlet resistances r1, r2 must be >= 0 and not both zero");
   require(p.stop_flow_ml_s > 0.0 && p.max_void_s > 0.0,
           "stop_flow_ml_s and max_void_s must be > 0");
-  if (o.level != 1 && o.level != 2) usage_error("level must be 1 or 2");
+  require(p.p_close_cmh2o <= p.p_open_cmh2o && p.urethra_half_open_cmh2o >= 0.0,
+          "the urethra closes at or below its opening pressure: need p_close_cmh2o <= "
+          "p_open_cmh2o");
+  require(p.activation_onset_s >= 0.0 && p.activation_plateau_s >= 0.0 &&
+              p.activation_fade_s >= 0.0 && p.straining_kpa >= 0.0,
+          "activation times and straining_kpa must be >= 0");
+  if (o.level < 0 || o.level > 2) usage_error("level must be 0, 1 or 2");
   if (o.level == 2) {
     if (!(o.level2.fill_dt_s > 0.0 && o.level2.void_dt_s > 0.0))
       usage_error("level 2 time steps must be > 0");
@@ -81,17 +88,28 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
   if (options.level == 2)
     model = std::make_unique<fluid::NavierStokesCavity>(wall, fluid::reference_urine(*urine, wall),
                                                         *material, settings, options);
+  else if (options.level == 0)
+    model = std::make_unique<LumpedCavity>(wall, *material, settings);
   else
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
   CystometryResult result = CystometryProtocol(settings, options).run(*model);
   if (!options.output_dir.empty())
-    write_text_atomically(options.output_dir / "history.csv", history_csv(result.history));
+    write_text_atomically(options.output_dir / "history.csv",
+                          history_csv(result.history, history_label(result)));
   return result;
 }
 
-std::string history_csv(const std::vector<HistoryRow>& history) {
+std::string history_label(const CystometryResult& result) {
+  const std::string drive = result.summary.value("voiding_drive", "none");
+  if (drive == "detrusor") return "voided by detrusor contraction";
+  if (drive == "straining") return "voided by abdominal straining";
+  return "not voided";
+}
+
+std::string history_csv(const std::vector<HistoryRow>& history, const std::string& label) {
   std::ostringstream s;
   s.precision(10);
+  if (!label.empty()) s << "# vesica-simulate cystometry, " << label << '\n';
   s << "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml\n";
   for (const HistoryRow& r : history)
     s << r.time_s << ',' << r.infused_ml << ',' << r.volume_ml << ',' << r.pves_cmh2o << ','

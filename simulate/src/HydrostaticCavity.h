@@ -30,7 +30,7 @@ class HydrostaticCavity final : public CavityModel {
 
   StepResult try_volume_step(double volume_m3, const ProtocolLoads& loads) override;
   void start_clock() override;
-  void begin_voiding(const UrethraLaw& urethra) override;
+  void urethra_opens(const UrethraLaw& urethra) override;
   StepResult try_step(const StepRequest& step) override;
 
   double volume() const override { return volume_; }

@@ -1,10 +1,11 @@
 #pragma once
 // Simulated cystometry (docs/physics.md §4, §5, §7): filling at the infusion rate to
-// capacity, an optional hold, then voiding through the urethra law, recorded as a
-// history and summarized with the ICS numbers. One protocol runs over either cavity model:
-// level 1, the urine as an enclosed incompressible volume with a hydrostatic pressure
-// solved together with the wall (bordered Newton, volume control); level 2, the urine as a
-// Navier–Stokes flow on its tetrahedra, solved monolithically with the wall.
+// capacity, an optional hold, then voiding by the detrusor's contraction (or straining)
+// through the urethra law, recorded as a history and summarized with the ICS numbers. One
+// protocol runs over every cavity model: level 0, the lumped sphere-equivalent bladder
+// (§11); level 1, the urine as an enclosed incompressible volume with a hydrostatic
+// pressure solved together with the wall (bordered Newton, volume control); level 2, the
+// urine as a Navier–Stokes flow on its tetrahedra, solved monolithically with the wall.
 //
 // This is the stable in-process API used by vesica-simulate, the calibration in compare
 // and the studies:
@@ -66,7 +67,11 @@ CystometryResult run_cystometry(const WallModel& wall, const MaterialSpec& mater
                                 const fluid::FluidMesh* urine = nullptr);
 
 // history.csv text: time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,
-// flow_ml_s,voided_ml
-std::string history_csv(const std::vector<HistoryRow>& history);
+// flow_ml_s,voided_ml, after a '#' comment line "# vesica-simulate cystometry, <label>"
+// when a label is given (the readers of vesica_io skip comment lines).
+std::string history_csv(const std::vector<HistoryRow>& history, const std::string& label = "");
+// What emptied the bladder, from the summary's voiding_drive: "voided by detrusor
+// contraction", "voided by abdominal straining" or "not voided".
+std::string history_label(const CystometryResult& result);
 
 }  // namespace vesica::simulate
