@@ -74,6 +74,18 @@ def segment_phantom(d):
                  f"{num(d.get('volume_ml'), 4)} ml of {num(d.get('exact_volume_ml'), 4)} ml"))
 
 
+def segment_mr(d):
+    size = "×".join(str(n) for n in d.get("image_size", [])) + " voxels, 0.7×0.7×3.5 mm"
+    t = d.get("read_plus_segment_s") or {}
+    cpu = d.get("cpu_s") or []
+    return (size, t.get("best"), d.get("target_s"),
+            join(f"best of {d.get('repeats')}",
+                 f"median {seconds(t.get('median'))}, worst {seconds(t.get('worst'))}",
+                 f"CPU {seconds(min(cpu)) if cpu else '—'} a run",
+                 f"peak RSS {num(d.get('peak_rss_mb'))} MB",
+                 f"{num(d.get('volume_ml'), 4)} ml of {num(d.get('exact_volume_ml'), 4)} ml"))
+
+
 def segment_real(d):
     return ("3 mm CT of ../shared", d.get("segment_s"), d.get("target_s"),
             join(f"read {seconds(d.get('read_s'))}", f"peak RSS {num(d.get('peak_rss_mb'))} MB",
@@ -163,6 +175,7 @@ def study(d):
 
 CASES = [
     ("segment", "phantom_512x512x300_0p8mm", "segment: read + segment a phantom DICOM series", segment_phantom, True),
+    ("segment", "mr_512x512x40_0p7x0p7x3p5mm", "segment: read + segment a T2 MR phantom DICOM series (bias field, noise)", segment_mr, True),
     ("segment", "real_ct_3mm", "segment: segmentation of the real CT", segment_real, True),
     ("surface", None, "surface: real CT label → checked, remeshed surface", surface, True),
     ("mesh", None, "mesh --fluid: bladder-sized ellipsoid", mesh, True),

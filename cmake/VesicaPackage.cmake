@@ -16,7 +16,7 @@ set(VESICA_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/vesica)
 set(VESICA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/vesica)
 
 # The example pipelines keep their data beside them (demo.yaml reads data/*.csv).
-install(FILES pipelines/demo.yaml pipelines/neobladder-whatif.yaml
+install(FILES pipelines/demo.yaml pipelines/neobladder-whatif.yaml pipelines/mr-demo.yaml
   DESTINATION ${VESICA_INSTALL_DATADIR}/pipelines COMPONENT Runtime)
 install(DIRECTORY pipelines/data/
   DESTINATION ${VESICA_INSTALL_DATADIR}/pipelines/data COMPONENT Runtime)

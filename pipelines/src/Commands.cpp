@@ -42,7 +42,8 @@ Usage:
                                        the same pipeline as a Snakemake workflow
   vesica parameters [TOOL] [--json]    every stage parameter: key, unit, default, range
                                        (docs/parameters.md is this output)
-  vesica phantom OUT_DIR [args...]     synthetic CT: runs vesica-phantom -o OUT_DIR args...
+  vesica phantom OUT_DIR [args...]     synthetic CT or MR (--modality mr): runs
+                                       vesica-phantom -o OUT_DIR args...
   vesica help | --version
 
 Stage executables vesica-<tool> are looked up beside this program.

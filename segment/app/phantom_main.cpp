@@ -1,71 +1,78 @@
-// vesica-phantom: a synthetic pelvic CT with a bladder of exactly known volume, written
-// as a DICOM series. It drives the demo pipeline and the segmentation tests.
-#include <cmath>
+// vesica-phantom: a synthetic pelvic CT or T2-weighted MR with a bladder of exactly known
+// volume, written as a DICOM series. It drives the demo pipelines and the segment tests.
+// Its options are the phantom parameter table (vesica/phantom/PhantomParameters.h).
+#include <cstdio>
 #include <string>
-#include <vector>
 
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
+#include "vesica/core/NumberRange.h"
+#include "vesica/core/ParameterCli.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/phantom/PhantomParameters.h"
 #include "vesica/segment/DicomSeriesWriter.h"
 #include "vesica/segment/Phantom.h"
 
 namespace seg = vesica::segment;
 
+namespace {
+
+// The image is synthesised in memory (4-byte voxels, and the sub-sampling of every border
+// voxel): 2e8 voxels are 800 MB, about a 512 x 512 x 760 CT.
+constexpr double kMaxVoxels = 2e8;
+
+// The grid the spacing and the field of view make, refused before any work when too large.
+void check_grid_size(const seg::PhantomSpec& spec) {
+  const double voxels = seg::phantom_voxel_count(spec);
+  if (voxels <= kMaxVoxels) return;
+  const auto n = seg::phantom_grid_size(spec);
+  const auto mm = seg::phantom_spacing_mm(spec);
+  vesica::usage_error(fmt::format(
+      "--fov-mm {},{},{} at --spacing-mm {} (slices {} mm apart) is {:g}x{:g}x{:g} = {:.3g} "
+      "voxels, more than {:g}: give a coarser --spacing-mm/--slice-spacing-mm or a smaller "
+      "--fov-mm",
+      vesica::format_number(spec.fov_mm[0]), vesica::format_number(spec.fov_mm[1]),
+      vesica::format_number(spec.fov_mm[2]), vesica::format_number(mm[0]),
+      vesica::format_number(mm[2]), n[0], n[1], n[2], voxels, kMaxVoxels));
+}
+
+nlohmann::json mr_summary(const seg::PhantomSpec& spec) {
+  return {{"echo_time_ms", spec.mr.echo_time_ms},
+          {"repetition_time_ms", spec.mr.repetition_time_ms},
+          {"field_strength_t", spec.mr.field_strength_t},
+          {"fat_suppression", spec.mr.fat_suppression},
+          {"bias_fraction", spec.mr.bias_fraction},
+          {"noise_sigma", spec.mr.noise_fraction * seg::mr_signal(seg::Tissue::Urine, spec.mr)},
+          {"urine_signal", seg::mr_signal(seg::Tissue::Urine, spec.mr)}};
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  CLI::App app{"Synthetic pelvic CT (DICOM series) with a bladder of exact volume",
-               "vesica-phantom"};
+  CLI::App app{
+      "Synthetic pelvic CT or T2-weighted MR (DICOM series) with a bladder of exact "
+      "volume",
+      "vesica-phantom"};
   vesica::CommonOptions common;
-  seg::PhantomSpec spec;
-  std::string output, shape = "sphere", orientation = "axial";
-  std::vector<double> fov(spec.fov_mm.begin(), spec.fov_mm.end());
+  vesica::phantom::PhantomSettings settings;
+  vesica::ParameterTable table = vesica::phantom::parameter_table(settings);
+  std::string output;
   app.add_option("-o,--output", output, "Output folder for the DICOM series")->required();
-  app.add_option("--bladder-ml", spec.bladder_ml, "Bladder (urine) volume in ml")
-      ->check(CLI::Range(1.0, 2000.0))
-      ->capture_default_str();
-  app.add_option("--spacing-mm", spec.spacing_mm, "Isotropic voxel size in mm")
-      ->check(CLI::Range(0.2, 10.0))
-      ->capture_default_str();
-  app.add_option("--fov-mm", fov, "Grid extent x,y,z in mm (L-R, A-P, I-S)")
-      ->delimiter(',')
-      ->expected(3)
-      ->capture_default_str();
-  app.add_option("--shape", shape, "Bladder shape")
-      ->check(CLI::IsMember({"sphere", "ellipsoid"}))
-      ->capture_default_str();
-  app.add_option("--orientation", orientation, "Slice orientation")
-      ->check(CLI::IsMember({"axial", "oblique"}))
-      ->capture_default_str();
-  app.add_flag("--reverse-slices", spec.reverse_slices,
-               "Store slices head-to-feet (reversed instance order)");
-  app.add_option("--noise-hu", spec.noise_hu, "Gaussian noise standard deviation in HU")
-      ->check(CLI::Range(0.0, 500.0))
-      ->capture_default_str();
-  app.add_option("--rng-seed", spec.rng_seed, "Noise random seed")->capture_default_str();
+  vesica::add_parameter_options(app, table);
   vesica::add_common_options(app, common);
 
   return vesica::run_stage_main(app, argc, argv, common, [&] {
-    for (int i = 0; i < 3; ++i) {
-      if (!(fov[i] > 0)) vesica::usage_error("--fov-mm values must be positive");
-      spec.fov_mm[i] = fov[i];
-    }
-    spec.shape = shape == "sphere" ? seg::PhantomShape::Sphere : seg::PhantomShape::Ellipsoid;
-    spec.orientation =
-        orientation == "axial" ? seg::PhantomOrientation::Axial : seg::PhantomOrientation::Oblique;
+    const seg::PhantomSpec spec = vesica::phantom::phantom_spec(settings);
+    check_grid_size(spec);
+    const bool is_mr = spec.modality == seg::Modality::MR;
     vesica::StageRecord record("vesica-phantom", argc, argv);  // StageRecord drops argv[0] itself
-    record.parameters() = {{"bladder_ml", spec.bladder_ml},
-                           {"spacing_mm", spec.spacing_mm},
-                           {"fov_mm", fov},
-                           {"shape", shape},
-                           {"orientation", orientation},
-                           {"reverse_slices", spec.reverse_slices},
-                           {"noise_hu", spec.noise_hu},
-                           {"rng_seed", spec.rng_seed}};
-    seg::CtImage::Pointer image;
+    record.parameters() = table.values();
+    seg::ScanImage::Pointer image;
     {
       vesica::PhaseTimer t(record, "synthesize");
       image = seg::make_phantom(spec);
@@ -74,28 +81,30 @@ int main(int argc, char** argv) {
     {
       vesica::PhaseTimer t(record, "write");
       vesica::write_atomically(output, [&](const std::filesystem::path& tmp) {
-        info = seg::write_dicom_series(*image, tmp, "VESICA synthetic pelvic phantom");
+        info = seg::write_dicom_series(*image, tmp, seg::phantom_series_header(spec));
       });
     }
     record.add_output(output);
     const auto truth = seg::phantom_truth(spec);
     const auto size = image->GetLargestPossibleRegion().GetSize();
+    const auto& sp = image->GetSpacing();
     auto& s = record.summary();
+    s["modality"] = is_mr ? "MR" : "CT";
     s["bladder_volume_ml"] = truth.bladder_volume_ml;
     s["bladder_center_mm"] = truth.bladder_center_mm;
     s["bladder_semi_axes_mm"] = truth.bladder_semi_axes_mm;
+    s["shape"] = record.parameters()["shape"];
     s["image_size"] = {size[0], size[1], size[2]};
-    s["spacing_mm"] = {spec.spacing_mm, spec.spacing_mm, spec.spacing_mm};
+    s["spacing_mm"] = {sp[0], sp[1], sp[2]};
     s["slice_count"] = info.slice_count;
-    s["series_uid"] = info.series_uid;
-    s["study_uid"] = info.study_uid;
-    s["orientation"] = orientation;
+    s["orientation"] = record.parameters()["orientation"];
     s["reverse_slices"] = spec.reverse_slices;
     s["coordinates"] = "LPS";
+    if (is_mr) s["mr"] = mr_summary(spec);
     const auto written = record.write(common.report, vesica::default_manifest_path(common, output));
     if (common.json) std::printf("%s\n", written.dump(2).c_str());
-    vesica::log()->info("phantom: {} slices, bladder {:.1f} ml -> {}", info.slice_count,
-                        truth.bladder_volume_ml, output);
+    vesica::log()->info("phantom: {} {} slices, bladder {:.1f} ml -> {}", is_mr ? "MR" : "CT",
+                        info.slice_count, truth.bladder_volume_ml, output);
     return 0;
   });
 }

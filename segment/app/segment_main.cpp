@@ -1,60 +1,44 @@
-// vesica-segment: CT (DICOM folder or volume file) to a bladder label map.
+// vesica-segment: CT or MR (DICOM folder or volume file) to a bladder label map. Its
+// options are the segment parameter table (SegmentParameters.h) and the series choice.
 #include <cstdio>
-#include <sstream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
+#include "vesica/core/NumberRange.h"
+#include "vesica/core/ParameterCli.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/segment/BladderSegmenter.h"
 #include "vesica/segment/DicomSeries.h"
 #include "vesica/segment/LabelStatistics.h"
+#include "vesica/segment/SegmentParameters.h"
 #include "vesica/segment/VolumeReader.h"
 
 namespace seg = vesica::segment;
 
 namespace {
 
-std::optional<std::array<double, 3>> parse_seed(const std::string& text) {
-  if (text == "auto") return std::nullopt;
-  std::array<double, 3> v{};
-  std::stringstream in(text);
-  std::string item;
-  int i = 0;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      if (i >= 3) throw std::invalid_argument(item);
-      v[i++] = std::stod(item, &used);
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      vesica::usage_error("--seed must be 'auto' or x,y,z in mm, got '" + text + "'");
-    }
-  }
-  if (i != 3) vesica::usage_error("--seed must be 'auto' or x,y,z in mm, got '" + text + "'");
-  return v;
-}
-
 void list_series(const std::string& input, bool json) {
   const auto all = seg::scan_dicom_folder(input);
   nlohmann::json out = nlohmann::json::array();
   for (const auto& s : all) {
     const double dz = s.slice_spacing_mm();
-    out.push_back({{"series_uid", s.uid},
+    out.push_back({{"series_key", s.key()},
                    {"modality", s.modality},
                    {"description", s.description},
                    {"slice_count", s.slices.size()},
                    {"image_size", {s.columns_rows[0], s.columns_rows[1], s.slices.size()}},
                    {"spacing_mm", {s.pixel_spacing_mm[0], s.pixel_spacing_mm[1], dz}}});
     if (!json)
-      std::printf("%s\t%s\t%s\t%zu slices\t%ux%ux%zu\t%.4gx%.4gx%.4g mm\n",
-                  s.uid.empty() ? "(empty UID)" : s.uid.c_str(), s.modality.c_str(),
-                  s.description.c_str(), s.slices.size(), s.columns_rows[0], s.columns_rows[1],
-                  s.slices.size(), s.pixel_spacing_mm[0], s.pixel_spacing_mm[1], dz);
+      std::printf("%s\t%s\t%s\t%zu slices\t%ux%ux%zu\t%.4gx%.4gx%.4g mm\n", s.key().c_str(),
+                  s.modality.c_str(), s.description.c_str(), s.slices.size(), s.columns_rows[0],
+                  s.columns_rows[1], s.slices.size(), s.pixel_spacing_mm[0], s.pixel_spacing_mm[1],
+                  dz);
   }
   if (json) std::printf("%s\n", out.dump(2).c_str());
 }
@@ -68,49 +52,83 @@ bool supported_output(const std::string& path) {
   return false;
 }
 
+// The command line as the manifest keeps it, with a --series value given as a UID
+// replaced by its series key: UIDs are never written out.
+std::vector<std::string> recorded_arguments(int argc, char** argv) {
+  std::vector<std::string> args(argv, argv + argc);
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--series" && i + 1 < args.size()) {
+      args[i + 1] = seg::series_key(args[i + 1]);
+    } else if (args[i].rfind("--series=", 0) == 0) {
+      args[i] = "--series=" + seg::series_key(args[i].substr(9));
+    }
+  }
+  return args;
+}
+
+// --modality auto: the DICOM header's Modality, or CT for a volume file (which carries
+// no modality).
+seg::Modality resolve_modality(const std::string& option, const seg::Volume& volume,
+                               const std::string& input) {
+  if (option != "auto") return seg::modality_from_name(option, input, "");
+  if (volume.format != "dicom") return seg::Modality::CT;
+  return seg::modality_from_name(volume.modality, input,
+                                 "only CT and MR are segmented; give --modality ct or mr to "
+                                 "treat the series as one");
+}
+
+nlohmann::json thresholds(const seg::SegmentResult& r, seg::Modality modality) {
+  if (modality == seg::Modality::CT)
+    return {{"lower_hu", r.window_lower},
+            {"upper_hu", r.window_upper},
+            {"urine_hu", r.urine_level},
+            {"surroundings_hu", r.surroundings_level},
+            {"border_hu", r.border_level}};
+  return {{"units", r.intensity_units},
+          {"lower_rel", r.window_lower},
+          {"urine_rel", r.urine_level},
+          {"surroundings_rel", r.surroundings_level},
+          {"border_rel", r.border_level}};
+}
+
+// The checks that involve two parameters (each one's own range is the table's).
+void check_parameter_pairs(const seg::SegmentParams& p) {
+  if (!(p.lower_hu < p.upper_hu)) vesica::usage_error("--lower-hu must be below --upper-hu");
+  if (!(p.opening_mm <= p.max_opening_mm))
+    vesica::usage_error("--opening-mm must not exceed --max-opening-mm");
+  if (!(p.min_volume_ml < p.max_volume_ml))
+    vesica::usage_error("--min-volume-ml must be below --max-volume-ml");
+  if (!(p.mr.min_window <= p.mr.max_window))
+    vesica::usage_error("--min-window must not exceed --max-window");
+}
+
+// The shell's defaults depend on the modality, known once the input is read.
+void check_shell(const seg::SegmentParams& p) {
+  if (!(p.shell_inner() < p.shell_outer()))
+    vesica::usage_error("--shell-inner-mm (" + vesica::format_number(p.shell_inner()) +
+                        " mm) must be below --shell-outer-mm (" +
+                        vesica::format_number(p.shell_outer()) + " mm) for " +
+                        seg::modality_name(p.modality));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Segment the urinary bladder of a CT (DICOM folder, NIfTI, NRRD, MHA)",
-               "vesica-segment"};
+  CLI::App app{
+      "Segment the urinary bladder of a CT or T2-weighted MR (DICOM folder, NIfTI, "
+      "NRRD, MHA)",
+      "vesica-segment"};
   vesica::CommonOptions common;
-  seg::SegmentParams p;
-  std::string input, output, seed_text = "auto", series;
+  seg::SegmentSettings settings;
+  vesica::ParameterTable table = seg::parameter_table(settings);
+  seg::SegmentParams& p = settings.params;
+  std::string input, output, series;
   bool list = false;
   app.add_option("input", input, "DICOM folder or .nii/.nii.gz/.nrrd/.mha volume")->required();
   app.add_option("-o,--output", output, "Label map (.nii.gz, .nii, .nrrd, .mha)");
-  app.add_option("--seed", seed_text, "Seed x,y,z in mm (patient LPS) or 'auto'")
-      ->capture_default_str();
-  app.add_option("--lower-hu", p.lower_hu, "Urine window lower bound (HU)")->capture_default_str();
-  app.add_option("--upper-hu", p.upper_hu, "Urine window upper bound (HU)")->capture_default_str();
-  app.add_option("--series", series, "SeriesInstanceUID to read from a DICOM folder");
+  app.add_option("--series", series, "Series key (see --list-series) or SeriesInstanceUID");
   app.add_flag("--list-series", list, "List the series of a DICOM folder and exit");
-  app.add_option("--roi-radius-mm", p.roi_radius_mm, "Half edge of the region of interest")
-      ->capture_default_str();
-  app.add_option("--work-spacing-mm", p.work_spacing_mm, "Finer inputs are processed at this")
-      ->capture_default_str();
-  app.add_option("--diffusion-iterations", p.diffusion_iterations,
-                 "Curvature anisotropic diffusion iterations")
-      ->capture_default_str();
-  app.add_option("--diffusion-conductance", p.diffusion_conductance,
-                 "Curvature anisotropic diffusion conductance")
-      ->capture_default_str();
-  app.add_option("--opening-mm", p.opening_mm, "Opening radius that cuts thin bridges")
-      ->capture_default_str();
-  app.add_option("--max-opening-mm", p.max_opening_mm, "Leak guard: largest opening radius")
-      ->capture_default_str();
-  app.add_option("--max-volume-ml", p.max_volume_ml, "Leak guard: largest plausible bladder")
-      ->capture_default_str();
-  app.add_option("--shell-inner-mm", p.shell_inner_mm, "Surroundings shell inner distance")
-      ->capture_default_str();
-  app.add_option("--shell-outer-mm", p.shell_outer_mm, "Surroundings shell outer distance")
-      ->capture_default_str();
-  app.add_option("--levelset-curvature", p.levelset_curvature, "Level-set curvature weight")
-      ->capture_default_str();
-  app.add_option("--levelset-band-mm", p.levelset_band_mm, "Level-set refinement band")
-      ->capture_default_str();
-  app.add_option("--levelset-iterations", p.levelset_iterations, "Level-set iterations")
-      ->capture_default_str();
+  vesica::add_parameter_options(app, table);
   vesica::add_common_options(app, common);
 
   return vesica::run_stage_main(app, argc, argv, common, [&] {
@@ -121,15 +139,24 @@ int main(int argc, char** argv) {
     if (output.empty()) vesica::usage_error("-o/--output is required");
     if (!supported_output(output))
       vesica::usage_error("output must end in .nii.gz, .nii, .nrrd or .mha: " + output);
-    if (!(p.lower_hu < p.upper_hu)) vesica::usage_error("--lower-hu must be below --upper-hu");
-    p.seed_mm = parse_seed(seed_text);
+    check_parameter_pairs(p);
 
-    vesica::StageRecord record("vesica-segment", argc, argv);  // StageRecord drops argv[0] itself
+    const auto args = recorded_arguments(argc, argv);
+    std::vector<const char*> arg_ptrs;
+    for (const auto& a : args) arg_ptrs.push_back(a.c_str());
+    vesica::StageRecord record("vesica-segment", static_cast<int>(arg_ptrs.size()),
+                               arg_ptrs.data());  // StageRecord drops argv[0] itself
+    record.parameters() = table.values();
     seg::Volume volume;
     {
       vesica::PhaseTimer t(record, "read");
       volume = seg::read_volume(input, series);
     }
+    p.modality = resolve_modality(settings.modality, volume, input);
+    check_shell(p);
+    const bool is_mr = p.modality == seg::Modality::MR;
+    if (is_mr && (app.count("--lower-hu") || app.count("--upper-hu")))
+      vesica::log()->warn("--lower-hu/--upper-hu apply to CT only; the MR window is learned");
     seg::SegmentResult result;
     {
       vesica::PhaseTimer t(record, "segment");
@@ -142,47 +169,29 @@ int main(int argc, char** argv) {
     }
     record.add_input(input);
     record.add_output(output);
-    record.parameters() = {{"seed", seed_text},
-                           {"lower_hu", p.lower_hu},
-                           {"upper_hu", p.upper_hu},
-                           {"series", series},
-                           {"roi_radius_mm", p.roi_radius_mm},
-                           {"work_spacing_mm", p.work_spacing_mm},
-                           {"diffusion_iterations", p.diffusion_iterations},
-                           {"diffusion_conductance", p.diffusion_conductance},
-                           {"opening_mm", p.opening_mm},
-                           {"max_opening_mm", p.max_opening_mm},
-                           {"max_volume_ml", p.max_volume_ml},
-                           {"shell_inner_mm", p.shell_inner_mm},
-                           {"shell_outer_mm", p.shell_outer_mm},
-                           {"levelset_curvature", p.levelset_curvature},
-                           {"levelset_band_mm", p.levelset_band_mm},
-                           {"levelset_iterations", p.levelset_iterations}};
     const auto stats = seg::label_statistics(*result.label);
     const auto& sp = volume.image->GetSpacing();
     const auto size = volume.image->GetLargestPossibleRegion().GetSize();
     auto& s = record.summary();
     s["volume_ml"] = stats.volume_ml;
     s["voxel_count"] = stats.voxel_count;
+    s["modality"] = seg::modality_name(p.modality);
     s["spacing_mm"] = {sp[0], sp[1], sp[2]};
     s["image_size"] = {size[0], size[1], size[2]};
     s["bbox_mm"] = {{"min", stats.bbox_min_mm}, {"max", stats.bbox_max_mm}};
     s["centroid_mm"] = stats.centroid_mm;
     s["coordinates"] = "LPS";
-    s["thresholds"] = {{"lower_hu", p.lower_hu},
-                       {"upper_hu", p.upper_hu},
-                       {"urine_hu", result.urine_hu},
-                       {"surroundings_hu", result.surroundings_hu},
-                       {"border_hu", result.border_hu}};
+    s["thresholds"] = thresholds(result, p.modality);
     s["seed_mm"] = result.seed_mm;
     s["seed_mode"] = result.seed_mode;
-    s["series_uid"] = volume.series_uid;
+    if (volume.format == "dicom") s["series_key"] = volume.series_key;
+    if (is_mr && volume.echo_time_ms >= 0) s["echo_time_ms"] = volume.echo_time_ms;
     s["input_format"] = volume.format;
     s["steps"] = result.diagnostics;
     const auto written = record.write(common.report, vesica::default_manifest_path(common, output));
     if (common.json) std::printf("%s\n", written.dump(2).c_str());
-    vesica::log()->info("bladder {:.1f} ml ({} voxels) -> {}", stats.volume_ml, stats.voxel_count,
-                        output);
+    vesica::log()->info("bladder {:.1f} ml ({} voxels, {}) -> {}", stats.volume_ml,
+                        stats.voxel_count, seg::modality_name(p.modality), output);
     return 0;
   });
 }

@@ -41,13 +41,13 @@ double height_fraction(const Float& image, const Float::PointType& p) {
 
 }  // namespace
 
-std::optional<AutoSeed> find_bladder_seed(const CtImage& ct, const AutoSeedParams& p) {
-  const auto& s = ct.GetSpacing();
+std::optional<AutoSeed> find_bladder_seed(const ScanImage& image, const AutoSeedParams& p) {
+  const auto& s = image.GetSpacing();
   const bool coarsen = std::min({s[0], s[1], s[2]}) < p.coarse_spacing_mm * 0.999;
-  Float::Pointer coarse = coarsen ? resample_isotropic(ct, p.coarse_spacing_mm)
-                                  : Float::Pointer(const_cast<Float*>(&ct));
+  Float::Pointer coarse = coarsen ? resample_isotropic(image, p.coarse_spacing_mm, p.outside)
+                                  : Float::Pointer(const_cast<Float*>(&image));
   auto smooth = gaussian(*coarse, p.smoothing_mm);
-  auto cores = erode(*threshold(*smooth, p.lower_hu, p.upper_hu), p.core_erosion_mm);
+  auto cores = erode(*threshold(*smooth, p.lower, p.upper), p.core_erosion_mm);
   auto depth = signed_distance(*cores);
   auto cc = itk::ConnectedComponentImageFilter<Mask, LabelMap>::New();
   cc->SetInput(cores);

@@ -135,7 +135,7 @@ Float::RegionType region_around(const Float& image, const Float::PointType& cent
 }
 
 // Resamples onto an isotropic grid of `spacing` covering the same physical box.
-Float::Pointer resample_isotropic(const Float& image, double spacing) {
+Float::Pointer resample_isotropic(const Float& image, double spacing, double outside) {
   using Image = Float;
   auto f = itk::ResampleImageFilter<Image, Image>::New();
   f->SetInput(&image);
@@ -160,7 +160,7 @@ Float::Pointer resample_isotropic(const Float& image, double spacing) {
   f->SetOutputSpacing(s);
   f->SetOutputOrigin(origin);
   f->SetOutputDirection(image.GetDirection());
-  f->SetDefaultPixelValue(-1000);
+  f->SetDefaultPixelValue(static_cast<float>(outside));
   f->Update();
   return f->GetOutput();
 }
@@ -178,19 +178,27 @@ Float::Pointer anisotropic_diffusion(const Float& image, int iterations, double 
   return f->GetOutput();
 }
 
-// The mask voxel nearest to `seed` within `radius_mm`, if any.
-std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm) {
-  const auto& s = m.GetSpacing();
-  Mask::RegionType box;
+std::optional<Float::RegionType> box_within(const itk::ImageBase<3>& image, const Index& seed,
+                                            double radius_mm) {
+  const auto& s = image.GetSpacing();
+  Float::RegionType box;
   for (int i = 0; i < 3; ++i) {
     const auto r = static_cast<itk::IndexValueType>(std::ceil(radius_mm / s[i]));
     box.SetIndex(i, seed[i] - r);
     box.SetSize(i, static_cast<itk::SizeValueType>(2 * r + 1));
   }
-  if (!box.Crop(m.GetLargestPossibleRegion())) return std::nullopt;
+  if (!box.Crop(image.GetLargestPossibleRegion())) return std::nullopt;
+  return box;
+}
+
+// The mask voxel nearest to `seed` within `radius_mm`, if any.
+std::optional<Index> nearest_inside(const Mask& m, const Index& seed, double radius_mm) {
+  const auto& s = m.GetSpacing();
+  const auto box = box_within(m, seed, radius_mm);
+  if (!box) return std::nullopt;
   std::optional<Index> best;
   double best_d2 = radius_mm * radius_mm;
-  itk::ImageRegionConstIteratorWithIndex<Mask> it(&m, box);
+  itk::ImageRegionConstIteratorWithIndex<Mask> it(&m, *box);
   for (; !it.IsAtEnd(); ++it) {
     if (!it.Get()) continue;
     double d2 = 0;
@@ -210,8 +218,7 @@ Float::Pointer signed_distance(const Mask& m) {
   return f->GetOutput();
 }
 
-// Median of `image` where `where` is set (NaN when empty).
-double median_where(const Float& image, const Mask& where) {
+double percentile_where(const Float& image, const Mask& where, double percent) {
   std::vector<float> v;
   const auto* w = where.GetBufferPointer();
   const auto* x = image.GetBufferPointer();
@@ -219,8 +226,15 @@ double median_where(const Float& image, const Mask& where) {
   for (std::size_t i = 0; i < n; ++i)
     if (w[i]) v.push_back(x[i]);
   if (v.empty()) return std::nan("");
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
+  const auto k =
+      std::min(v.size() - 1, static_cast<std::size_t>(std::clamp(percent, 0.0, 100.0) / 100.0 *
+                                                      static_cast<double>(v.size())));
+  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k), v.end());
+  return v[k];
+}
+
+double median_where(const Float& image, const Mask& where) {
+  return percentile_where(image, where, 50.0);
 }
 
 Float::RegionType region_covering(const Float& image, const Mask& mask, double margin_mm) {
@@ -235,7 +249,7 @@ Float::RegionType region_covering(const Float& image, const Mask& mask, double m
         lo[i] = std::min(lo[i], it.GetIndex()[i]);
         hi[i] = std::max(hi[i], it.GetIndex()[i]);
       }
-  Float::RegionType region = image.GetLargestPossibleRegion();
+  const Float::RegionType& region = image.GetLargestPossibleRegion();
   if (lo[0] > hi[0]) return region;  // empty mask: everything
   Index rlo, rhi;
   rlo.Fill(std::numeric_limits<itk::IndexValueType>::max());

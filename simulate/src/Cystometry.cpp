@@ -94,8 +94,7 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
   CystometryResult result = CystometryProtocol(settings, options).run(*model);
   if (!options.output_dir.empty())
-    write_text_atomically(options.output_dir / "history.csv",
-                          history_csv(result.history, history_label(result)));
+    write_labelled_history(result, options.output_dir / "history.csv");
   return result;
 }
 
@@ -106,15 +105,9 @@ std::string history_label(const CystometryResult& result) {
   return "not voided";
 }
 
-std::string history_csv(const std::vector<HistoryRow>& history, const std::string& label) {
-  std::ostringstream s;
-  s.precision(10);
-  if (!label.empty()) s << "# vesica-simulate cystometry, " << label << '\n';
-  s << "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml\n";
-  for (const HistoryRow& r : history)
-    s << r.time_s << ',' << r.infused_ml << ',' << r.volume_ml << ',' << r.pves_cmh2o << ','
-      << r.pabd_cmh2o << ',' << r.pdet_cmh2o << ',' << r.flow_ml_s << ',' << r.voided_ml << '\n';
-  return s.str();
+void write_labelled_history(const CystometryResult& result, const std::filesystem::path& csv) {
+  write_text_atomically(csv, "# vesica-simulate cystometry, " + history_label(result) + "\n" +
+                                 io::history_csv_text(result.history));
 }
 
 }  // namespace vesica::simulate

@@ -11,6 +11,7 @@
 #include <vtkPolyData.h>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/PouchShape.h"
 #include "vesica/core/Units.h"
 #include "vesica/surface/PolygonMeshProcessing.h"
 #include "vesica/surface/VtkConversion.h"
@@ -21,22 +22,8 @@ namespace {
 
 using Field = std::function<double(const Eigen::Vector3d&)>;  // < 0 inside
 
-// Zero set is the exact ellipsoid; the value approximates a signed distance.
-double ellipsoid_field(const Eigen::Vector3d& p, const Eigen::Vector3d& axes) {
-  return (p.cwiseQuotient(axes).norm() - 1.0) * axes.minCoeff();
-}
-
-// Signed distance to a vertical capsule around the segment z in [z0, z1]: the rounded
-// end gives the neck a single lowest point, the outlet.
-double capsule_field(const Eigen::Vector3d& p, double radius, double z0, double z1) {
-  const double z = std::clamp(p.z(), z0, z1);
-  return (p - Eigen::Vector3d(0, 0, z)).norm() - radius;
-}
-
-// Polynomial smooth minimum: a fillet of width k where the neck meets the reservoir.
-double smooth_union(double a, double b, double k) {
-  const double h = std::clamp(0.5 + 0.5 * (b - a) / k, 0.0, 1.0);
-  return b * (1 - h) + a * h - k * h * (1 - h);
+Eigen::Vector3d to_eigen(const pouch::Vec3& v) {
+  return {v[0], v[1], v[2]};
 }
 
 double radius_for_volume(double volume_ml) {
@@ -52,26 +39,29 @@ Eigen::Vector3d reservoir_axes(const ShapeSpec& spec) {
       Eigen::Vector3d axes = spec.semi_axes_mm.value_or(Eigen::Vector3d(1, 1, spec.elongation));
       return axes * std::cbrt(r * r * r / axes.prod());
     }
-    case ShapeKind::Pouch: {
-      const Eigen::Vector3d axes(spec.elongation, 1, 1);
-      return axes * std::cbrt(r * r * r / axes.prod());
-    }
+    case ShapeKind::Pouch:
+      return to_eigen(pouch::reservoir_semi_axes_mm(spec.volume_ml, spec.elongation));
   }
   return Eigen::Vector3d::Constant(r);
 }
 
+// The pouch is defined once, in core, for this stage and the phantom alike.
+pouch::PouchGeometry pouch_geometry_of(const ShapeSpec& spec) {
+  return pouch::pouch_geometry(spec.volume_ml, spec.elongation, spec.neck_radius_mm);
+}
+
 Field shape_field(const ShapeSpec& spec, double* lowest_z) {
-  const Eigen::Vector3d axes = reservoir_axes(spec);
   if (spec.kind != ShapeKind::Pouch) {
+    const Eigen::Vector3d axes = reservoir_axes(spec);
     *lowest_z = -axes.z();
-    return [axes](const Eigen::Vector3d& p) { return ellipsoid_field(p, axes); };
+    const pouch::Vec3 a = {axes.x(), axes.y(), axes.z()};
+    return [a](const Eigen::Vector3d& p) {
+      return pouch::ellipsoid_field({p.x(), p.y(), p.z()}, a);
+    };
   }
-  const double neck = pouch_neck_radius_mm(spec);
-  const double bottom = -axes.z() - 0.5 * neck;
-  *lowest_z = bottom - neck;
-  return [axes, neck, bottom](const Eigen::Vector3d& p) {
-    return smooth_union(ellipsoid_field(p, axes), capsule_field(p, neck, bottom, 0.0), 0.5 * neck);
-  };
+  const pouch::PouchGeometry g = pouch_geometry_of(spec);
+  *lowest_z = g.lowest_z_mm;
+  return [g](const Eigen::Vector3d& p) { return pouch::pouch_field(g, {p.x(), p.y(), p.z()}); };
 }
 
 // Samples the field on a grid around the shape and contours its zero level.
@@ -113,8 +103,7 @@ ShapeKind shape_kind_from_name(const std::string& name) {
 }
 
 double pouch_neck_radius_mm(const ShapeSpec& spec) {
-  if (spec.neck_radius_mm > 0) return spec.neck_radius_mm;
-  return 0.25 * reservoir_axes(spec).minCoeff();
+  return pouch_geometry_of(spec).neck_radius_mm;
 }
 
 TriangleSurface make_shape(const ShapeSpec& spec) {

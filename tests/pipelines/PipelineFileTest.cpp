@@ -131,6 +131,7 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
                             "inputs: {ct: ../data/ct}\n"
                             "stages:\n"
                             "  segment:\n"
+                            "    tool: teststage\n"  // no table: any param reaches the argv
                             "    input: ${inputs.ct}\n"
                             "    output: seg/bladder.nii.gz\n"
                             "    params: {seed: auto, lower_hu: -20, fluid: true, no_void: false,"

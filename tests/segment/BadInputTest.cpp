@@ -4,42 +4,14 @@
 #include <fstream>
 
 #include "SegmentTestHelpers.h"
-#include "vesica/segment/DicomSeriesWriter.h"
-#include "vesica/segment/Phantom.h"
 
 namespace fs = std::filesystem;
 namespace seg = vesica::segment;
 using vesica::test::read_text;
 using vesica::test::run_tool;
 
-namespace {
-
-// A small phantom series for corrupting.
-fs::path small_series(const fs::path& dir, const std::string& name, std::uint32_t rng = 1) {
-  seg::PhantomSpec spec;
-  spec.spacing_mm = 5.0;
-  spec.fov_mm = {200, 200, 150};
-  spec.rng_seed = rng;
-  seg::write_dicom_series(*seg::make_phantom(spec), dir / name, "test");
-  return dir / name;
-}
-
-// Runs vesica-segment and checks: failure, one line on stderr containing `expected`, no
-// output file.
-void expect_rejected(const fs::path& dir, const std::string& args, const std::string& expected) {
-  const fs::path out = dir / "out.nii.gz";
-  fs::remove(out);
-  const int code = run_tool("vesica-segment", args + " -o " + out.string(), dir);
-  EXPECT_NE(code, 0);
-  const std::string err = read_text(dir / "stderr.txt");
-  EXPECT_NE(err.find(expected), std::string::npos) << err;
-  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
-  EXPECT_FALSE(fs::exists(out));
-  for (const auto& e : fs::directory_iterator(dir))
-    EXPECT_NE(e.path().filename().string().rfind("out", 0), 0u) << e.path();
-}
-
-}  // namespace
+using vesica::test::expect_rejected;
+using vesica::test::small_series;
 
 TEST(BadInput, EmptyFolder) {
   const auto dir = vesica::test::scratch_dir("segment-bad-empty");

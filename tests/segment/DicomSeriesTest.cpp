@@ -29,7 +29,7 @@ TEST(DicomSeries, RealJpeg2000SeriesGeometryAndHounsfieldRange) {
   EXPECT_NEAR(v.image->GetSpacing()[0], 0.977, 1e-3);
   EXPECT_NEAR(v.image->GetSpacing()[1], 0.977, 1e-3);
   EXPECT_NEAR(v.image->GetSpacing()[2], 2.0, 1e-3);  // not SliceThickness (3 mm)
-  auto mm = itk::MinimumMaximumImageCalculator<seg::CtImage>::New();
+  auto mm = itk::MinimumMaximumImageCalculator<seg::ScanImage>::New();
   mm->SetImage(v.image);
   mm->Compute();
   EXPECT_NEAR(mm->GetMinimum(), -1024.0, 0.5);
@@ -48,7 +48,7 @@ void expect_round_trip(seg::PhantomOrientation orientation, bool reverse) {
   const auto dir = vesica::test::scratch_dir("dicom-round-trip");
   const auto info = seg::write_dicom_series(*image, dir / "series", "test");
   const auto v = seg::read_volume(dir / "series", "");
-  EXPECT_EQ(v.series_uid, info.series_uid);
+  EXPECT_EQ(v.series_key, seg::series_key(info.series_uid));
   EXPECT_EQ(v.modality, "CT");
   // Same voxels in space: every voxel of the read image maps onto a written voxel with
   // the same HU (rounded to integers when stored).
@@ -58,9 +58,9 @@ void expect_round_trip(seg::PhantomOrientation orientation, bool reverse) {
   for (itk::IndexValueType k : {0L, 7L, static_cast<itk::IndexValueType>(size[2]) - 1})
     for (itk::IndexValueType j : {3L, 20L})
       for (itk::IndexValueType i : {5L, 17L}) {
-        seg::CtImage::PointType p;
+        seg::ScanImage::PointType p;
         v.image->TransformIndexToPhysicalPoint({{i, j, k}}, p);
-        seg::CtImage::IndexType w;
+        seg::ScanImage::IndexType w;
         ASSERT_TRUE(image->TransformPhysicalPointToIndex(p, w));
         EXPECT_NEAR(v.image->GetPixel({{i, j, k}}), std::round(image->GetPixel(w)), 0.5);
       }

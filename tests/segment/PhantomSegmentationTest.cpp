@@ -15,14 +15,10 @@
 #include "vesica/segment/VolumeReader.h"
 
 namespace seg = vesica::segment;
+using vesica::test::read_json;
 using vesica::test::run_tool;
 
 namespace {
-
-nlohmann::json read_json(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  return nlohmann::json::parse(in);
-}
 
 std::string seed_arg(const nlohmann::json& center) {
   return std::to_string(center[0].get<double>()) + "," + std::to_string(center[1].get<double>()) +

@@ -24,9 +24,9 @@ TEST(Phantom, VoxelisedBladderMatchesAnalyticVolumeAndCentre) {
   EXPECT_NEAR(stats.volume_ml, 300.0, 3.0);  // voxel-centre count, 1 %
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(stats.centroid_mm[i], truth.bladder_center_mm[i], 0.5);
   // Urine at the centre, air outside the body in the corner.
-  seg::CtImage::PointType c;
+  seg::ScanImage::PointType c;
   for (int i = 0; i < 3; ++i) c[i] = truth.bladder_center_mm[i];
-  seg::CtImage::IndexType k;
+  seg::ScanImage::IndexType k;
   ASSERT_TRUE(image->TransformPhysicalPointToIndex(c, k));
   EXPECT_NEAR(image->GetPixel(k), 10.0, 1e-3);
   EXPECT_NEAR(image->GetPixel({{0, 0, 0}}), -1000.0, 1e-3);

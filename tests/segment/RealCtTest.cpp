@@ -1,4 +1,5 @@
-// The real 3 mm CT against its reference bladder label (TotalSegmentator, 479 ml).
+// The real 3 mm CT against its reference bladder label (TotalSegmentator, 479 ml): the CT
+// path keeps its result (Dice 0.921, 475.8 ml) now that it shares its region steps with MR.
 #include <gtest/gtest.h>
 
 #include <itkImageFileReader.h>
@@ -37,8 +38,8 @@ TEST(RealCt, SeededSegmentationMatchesReference) {
   const double d = seg::dice(*result.label, *c.reference);
   RecordProperty("dice", std::to_string(d));
   RecordProperty("volume_ml", std::to_string(stats.volume_ml));
-  EXPECT_GE(d, 0.90);
-  EXPECT_NEAR(stats.volume_ml, ref.volume_ml, 0.05 * ref.volume_ml);
+  EXPECT_GE(d, 0.92);
+  EXPECT_NEAR(stats.volume_ml, 477.0, 5.0);  // 472-482 ml; the reference holds 479.1 ml
 }
 
 TEST(RealCt, AutomaticSeedingMatchesReference) {
@@ -48,6 +49,9 @@ TEST(RealCt, AutomaticSeedingMatchesReference) {
   const auto result = seg::segment_bladder(*c.ct.image, params, "ct.nii.gz");
   EXPECT_EQ(result.seed_mode, "auto");
   const double d = seg::dice(*result.label, *c.reference);
+  const double ml = seg::label_statistics(*result.label).volume_ml;
   RecordProperty("dice", std::to_string(d));
-  EXPECT_GE(d, 0.85);
+  RecordProperty("volume_ml", std::to_string(ml));
+  EXPECT_GE(d, 0.92);
+  EXPECT_NEAR(ml, 477.0, 5.0);
 }

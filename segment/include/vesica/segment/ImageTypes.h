@@ -5,8 +5,8 @@
 
 namespace vesica::segment {
 
-using CtImage = itk::Image<float, 3>;
+using ScanImage = itk::Image<float, 3>;
 using LabelImage = itk::Image<unsigned char, 3>;
-using PhysicalPoint = CtImage::PointType;
+using PhysicalPoint = ScanImage::PointType;
 
 }  // namespace vesica::segment

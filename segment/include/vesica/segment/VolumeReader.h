@@ -1,6 +1,8 @@
 #pragma once
 // One entry point for every input the segment stage accepts: a DICOM folder or a
-// NIfTI / NRRD / MetaImage volume. Values are returned as float (HU for CT).
+// NIfTI / NRRD / MetaImage volume. Values are returned as float (HU for CT, the stored
+// signal for MR). Whatever the format, the geometry must be finite (spacing > 0, finite
+// origin, an invertible direction) and every voxel a finite number.
 #include <filesystem>
 #include <string>
 
@@ -9,14 +11,15 @@
 namespace vesica::segment {
 
 struct Volume {
-  CtImage::Pointer image;
-  std::string series_uid;  // DICOM only
-  std::string modality;    // DICOM only
-  std::string format;      // "dicom", "nifti", "nrrd", "metaimage"
+  ScanImage::Pointer image;
+  std::string series_key;    // DICOM only: series_key() of the series read, never its UID
+  std::string modality;      // DICOM only: the header's Modality ("CT", "MR", ...)
+  double echo_time_ms = -1;  // DICOM MR only
+  std::string format;        // "dicom", "nifti", "nrrd", "metaimage"
 };
 
-// `series_uid` picks a series in a DICOM folder (ignored for volume files).
-Volume read_volume(const std::filesystem::path& input, const std::string& series_uid);
+// `series` picks a series in a DICOM folder by key or UID (ignored for volume files).
+Volume read_volume(const std::filesystem::path& input, const std::string& series);
 
 // Writes a label map (format from the extension); used through write_atomically.
 void write_label(const LabelImage& label, const std::filesystem::path& path);

@@ -20,6 +20,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/CystometrySettings.h"
 #include "vesica/simulate/Material.h"
 #include "vesica/simulate/WallLoading.h"
@@ -31,16 +32,8 @@ namespace fluid {
 struct FluidMesh;
 }
 
-struct HistoryRow {
-  double time_s = 0.0;
-  double infused_ml = 0.0;
-  double volume_ml = 0.0;
-  double pves_cmh2o = 0.0;
-  double pabd_cmh2o = 0.0;
-  double pdet_cmh2o = 0.0;
-  double flow_ml_s = 0.0;
-  double voided_ml = 0.0;
-};
+// One row of history.csv (clinical units, named by the suffixes); io owns the file.
+using HistoryRow = io::HistoryRow;
 
 struct CystometryResult {
   std::vector<HistoryRow> history;
@@ -66,12 +59,13 @@ CystometryResult run_cystometry(const WallModel& wall, const MaterialSpec& mater
                                 const ProtocolSettings& settings, const RunOptions& options,
                                 const fluid::FluidMesh* urine = nullptr);
 
-// history.csv text: time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,
-// flow_ml_s,voided_ml, after a '#' comment line "# vesica-simulate cystometry, <label>"
-// when a label is given (the readers of vesica_io skip comment lines).
-std::string history_csv(const std::vector<HistoryRow>& history, const std::string& label = "");
 // What emptied the bladder, from the summary's voiding_drive: "voided by detrusor
 // contraction", "voided by abdominal straining" or "not voided".
 std::string history_label(const CystometryResult& result);
+
+// history.csv (io's text, HistoryCsv.h) after a '#' comment line "# vesica-simulate
+// cystometry, <history_label>" saying which drive voided (the readers skip comment lines),
+// written atomically.
+void write_labelled_history(const CystometryResult& result, const std::filesystem::path& csv);
 
 }  // namespace vesica::simulate

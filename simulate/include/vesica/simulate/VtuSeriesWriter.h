@@ -9,7 +9,7 @@
 #include <Eigen/Dense>
 
 #include "vesica/io/PvdSeries.h"
-#include "vesica/simulate/MembraneElement.h"
+#include "vesica/simulate/WallStress.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {
