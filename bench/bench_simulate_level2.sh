@@ -23,7 +23,8 @@ mkdir -p "$work"
 "$build/bin/vesica-mesh" "$work/bladder.vtp" -o "$work/bladder.msh" --fluid --tet-size-mm 4.5 \
   --json > "$work/mesh.json"
 t0=$(date +%s%N)
-"$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 --mu-kpa 3 \
+"$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 \
+  --material neo-hookean --mu-kpa 3 --drive straining \
   --capacity-ml 100 --straining-kpa 4 --residual-ml 45 --json > "$work/simulate.json" || true
 t1=$(date +%s%N)
 

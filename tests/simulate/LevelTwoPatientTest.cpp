@@ -39,7 +39,8 @@ namespace {
 // and folds, which the membrane without a wrinkling model follows only in tiny steps
 // (docs/navier-stokes.md §3).
 const char* kProtocol =
-    " --mu-kpa 3 --capacity-ml 60 --straining-kpa 4 --residual-ml 45 --max-void-s 2 --json";
+    " --material neo-hookean --mu-kpa 3 --capacity-ml 60 --drive straining --straining-kpa 4"
+    " --residual-ml 45 --max-void-s 2 --json";
 
 nlohmann::json read_json(const fs::path& p) {
   return nlohmann::json::parse(std::ifstream(p));
