@@ -113,7 +113,15 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
     vesica::log()->error("{}", result_.failure);
   }
   take_notes();
-  frame(true);
+  try {
+    frame(true);
+  } catch (const std::runtime_error& e) {
+    // The wall's stresses at the last converged state may fail to evaluate where the step
+    // after it failed (a tension field without a solution): the history and the summary
+    // up to that state are still the run's results, and are written.
+    if (result_.completed) throw;
+    result_.notes.push_back(std::string("no last frame: ") + e.what());
+  }
   if (series_) series_->finish();
   model.finish_frames();
   summarize(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
