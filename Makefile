@@ -19,6 +19,8 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
   xvfb xauth chromium snakemake python3-meshio
+# zlib: core reads every gzip output back before it replaces anything
+DEBIAN_PACKAGES += zlib1g-dev
 
 # make package: dpkg-shlibdeps computes the Debian package's Depends.
 DEBIAN_PACKAGES += dpkg-dev

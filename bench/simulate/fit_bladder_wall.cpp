@@ -75,7 +75,7 @@ double rmse_at_rows(const compare::Curve& model_curve, const Rows& m) {
 
 // The simulated filling curve (volume ml, Pdet cmH2O) of the bladder wall with these
 // parameters (SI), empty when the run fails.
-compare::Curve filling(const compare::CalibrationProblem& pb,
+compare::Curve filling(const compare::CystometryModel& pb,
                        const std::map<std::string, double>& params) {
   simulate::MaterialSpec material = pb.material;
   for (const auto& [k, v] : params) material.params[k] = v;
@@ -92,7 +92,7 @@ compare::Curve filling(const compare::CalibrationProblem& pb,
 
 // k1 (Pa) such that Pdet(capacity) = target at mu (Pa) and k2 (Pdet at capacity grows with
 // k1), by bisection in ln k1; the curve of that k1 in `curve`.
-double k1_for_end_filling(const compare::CalibrationProblem& pb, std::map<std::string, double> p,
+double k1_for_end_filling(const compare::CystometryModel& pb, std::map<std::string, double> p,
                           double target_cmh2o, compare::Curve& curve) {
   double lo = 1.0, hi = 3000.0;
   for (int it = 0; it < 40 && hi / lo > 1.002; ++it) {
@@ -119,7 +119,7 @@ bool rises_from(const compare::Curve& c, double from_ml) {
 // kRisingFromMl on: a grid over mu (kPa) and k2 on the lumped wall (level 0, milliseconds a
 // run), k1 from the constraint; then k1 solved again at the problem's own level for the
 // best (mu, k2).
-nlohmann::json constrained_fit(compare::CalibrationProblem pb, const Rows& m, double target_cmh2o) {
+nlohmann::json constrained_fit(compare::CystometryModel pb, const Rows& m, double target_cmh2o) {
   const int level = pb.run.level;
   pb.run.level = 0;
   double best = 1e300, best_mu = 0.0, best_k2 = 0.0;
@@ -139,39 +139,51 @@ nlohmann::json constrained_fit(compare::CalibrationProblem pb, const Rows& m, do
   const double k1 = k1_for_end_filling(pb, {{"mu", units::pa_from_kpa(best_mu)}, {"k2", best_k2}},
                                        target_cmh2o, c);
   const compare::PiecewiseLinear model(c.x, c.y);
-  return {{"mu_kpa", best_mu},
-          {"k1_pa", k1},
-          {"k2", best_k2},
-          {"rmse_at_rows_cmh2o", rmse_at_rows(c, m)},
-          {"rmse_at_rows_level0_cmh2o", best},
-          {"rises_from_ml", kRisingFromMl},
-          {"rises", rises_from(c, kRisingFromMl)},
-          {"fitted_pdet_cmh2o",
-           {{"start", model(pb.protocol.start_ml)},
-            {"100_ml", model(100.0)},
-            {"200_ml", model(200.0)},
-            {"300_ml", model(300.0)},
-            {"capacity", c.y.back()}}}};
+  return nlohmann::json{{"mu_kpa", best_mu},
+                        {"k1_pa", k1},
+                        {"k2", best_k2},
+                        {"rmse_at_rows_cmh2o", rmse_at_rows(c, m)},
+                        {"rmse_at_rows_level0_cmh2o", best},
+                        {"rises_from_ml", kRisingFromMl},
+                        {"rises", rises_from(c, kRisingFromMl)},
+                        {"fitted_pdet_cmh2o",
+                         {{"start", model(pb.protocol.start_ml)},
+                          {"100_ml", model(100.0)},
+                          {"200_ml", model(200.0)},
+                          {"300_ml", model(300.0)},
+                          {"capacity", c.y.back()}}}};
 }
 
-// The unconstrained fit by compare's calibration (Levenberg–Marquardt, intervals).
-nlohmann::json calibration_fit(compare::CalibrationProblem pb, const Rows& m,
+// The unconstrained fit by compare's calibration (Levenberg–Marquardt, intervals) at the
+// model's own level, without the surrogate stage; its curve from one more run.
+nlohmann::json calibration_fit(const compare::CystometryModel& model,
+                               const compare::RecordingAnalysis& measured, const Rows& m,
                                const std::vector<std::string>& names,
                                std::map<std::string, double> start) {
+  compare::CalibrationProblem pb;
+  pb.model = model;
   for (const std::string& name : names) {
-    compare::ParameterSpec s = compare::parameter_spec(name);
-    s.initial = start[name];
-    pb.parameters.push_back(s);
+    compare::ModelParameter p = compare::model_parameter(name);
+    p.fit.initial = start[name];
+    pb.parameters.push_back(p);
   }
-  const compare::CalibrationResult r = compare::calibrate(pb);
-  nlohmann::json out = compare::to_json(r);
-  out["rmse_at_rows_cmh2o"] = rmse_at_rows(r.fitted_filling, m);
-  const compare::PiecewiseLinear model(r.fitted_filling.x, r.fitted_filling.y);
-  out["fitted_pdet_cmh2o"] = {{"start", model(pb.protocol.start_ml)},
-                              {"100_ml", model(100.0)},
-                              {"200_ml", model(200.0)},
-                              {"300_ml", model(300.0)},
-                              {"capacity", model(pb.protocol.capacity_ml)}};
+  pb.targets = compare::filling_targets(measured, m.volume_ml.front(), m.volume_ml.back());
+  pb.use_surrogate = false;
+  pb.budget.model_simulations = 80;
+  const compare::FitOutcome fit = compare::calibrate(pb);
+  nlohmann::json out = compare::to_json(fit.result);
+  compare::CystometryModel fitted = model;
+  for (std::size_t j = 0; j < pb.parameters.size(); ++j)
+    pb.parameters[j].apply(fit.result.parameters[j].value, fitted.material, fitted.protocol);
+  const compare::Curve c = filling(fitted, {});
+  if (c.y.empty()) return out;
+  out["rmse_at_rows_cmh2o"] = rmse_at_rows(c, m);
+  const compare::PiecewiseLinear curve(c.x, c.y);
+  out["fitted_pdet_cmh2o"] = {{"start", curve(model.protocol.start_ml)},
+                              {"100_ml", curve(100.0)},
+                              {"200_ml", curve(200.0)},
+                              {"300_ml", curve(300.0)},
+                              {"capacity", c.y.back()}};
   return out;
 }
 
@@ -203,13 +215,12 @@ int main(int argc, char** argv) try {
     }
   }
   const compare::RecordingAnalysis measured = compare::analyse(io::read_recording(argv[2]));
-  compare::CalibrationProblem pb;
+  compare::CystometryModel pb;
   pb.wall = simulate::load_wall(argv[1], simulate::WallOptions{});
   pb.material = {"bladder", held};
   pb.run.level = level;
   pb.run.filling_only = true;
   pb.protocol.void_after_fill = false;
-  pb.measured_filling = measured.filling;
   Rows rows;
   double hi = 0.0;
   for (std::size_t i = 0; i < measured.filling.x.size(); ++i) {
@@ -218,12 +229,10 @@ int main(int argc, char** argv) try {
     rows.volume_ml.push_back(measured.filling.x[i]);
     rows.pdet_cmh2o.push_back(measured.filling.y[i]);
   }
-  pb.volume_lo_ml = pb.protocol.start_ml;
-  pb.volume_hi_ml = pb.protocol.capacity_ml = hi;
-  pb.max_simulations = 80;
+  pb.protocol.capacity_ml = hi;
 
   nlohmann::json out = end_filling > 0.0 ? constrained_fit(pb, rows, end_filling)
-                                         : calibration_fit(pb, rows, names, start);
+                                         : calibration_fit(pb, measured, rows, names, start);
   const auto [constant, line] = baselines(rows);
   out["level"] = level;
   out["held_si"] = held;

@@ -8,6 +8,7 @@
 #include "HydrostaticCavity.h"
 #include "LumpedCavity.h"
 #include "PrestressReference.h"
+#include "ProtocolRanges.h"
 #include "fluid/NavierStokesCavity.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
@@ -68,6 +69,7 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
     if (o.dynamic || o.reference != ReferenceState::Scale)
       usage_error("level 2 supports the scaled reference (--reference scale) without --dynamic");
   }
+  detail::require_protocol_ranges(p, o);  // after the checks above, whose words users know
   if (reference_ml > 0.0) validate_against_reference(p, o, reference_ml);
 }
 

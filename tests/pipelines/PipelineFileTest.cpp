@@ -159,14 +159,19 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
                                             "--label",
                                             "true",
                                             "--report",
-                                            "seg/segment.json",
+                                            ".vesica/segment.json",
                                             "--manifest",
-                                            "seg/segment.manifest.json"};
+                                            ".vesica/segment.manifest.json"};
   EXPECT_EQ(plan.stages[0].argv, segment);
-  const std::vector<std::string> surface = {
-      "seg/bladder.nii.gz",   "-o",       "bladder.vtp",          "--aux",
-      "../../data/ct",        "--report", "reports/surface.json", "--manifest",
-      "surface.manifest.json"};
+  const std::vector<std::string> surface = {"seg/bladder.nii.gz",
+                                            "-o",
+                                            "bladder.vtp",
+                                            "--aux",
+                                            "../../data/ct",
+                                            "--report",
+                                            "reports/surface.json",
+                                            "--manifest",
+                                            ".vesica/surface.manifest.json"};
   EXPECT_EQ(plan.stages[1].argv, surface);
   EXPECT_EQ(plan.stages[1].deps, std::vector<std::size_t>{0});
   EXPECT_EQ(plan.workdir, (dir / "study" / "out").lexically_normal());

@@ -56,7 +56,7 @@ TEST(StageParameters, EachStageDescribesTheTableTheRunnerChecks) {
 TEST(StageParameters, ManifestsListEveryTableEntry) {
   const fs::path dir = scratch_dir("stage-parameters-manifest");
   small_sphere(dir);
-  expect_every_entry("surface", manifest_parameters(dir / "s.vtp.manifest.json"),
+  expect_every_entry("surface", manifest_parameters(dir / ".vesica/s.vtp.manifest.json"),
                      {{"shape", "sphere"}, {"volume_ml", 20.0}, {"edge_mm", 5.0}});
 
   const auto mesh = run_command(
@@ -66,7 +66,7 @@ TEST(StageParameters, ManifestsListEveryTableEntry) {
       dir);
   ASSERT_EQ(mesh.exit_code, 0) << mesh.err;
   expect_every_entry(
-      "mesh", manifest_parameters(dir / "m.msh.manifest.json"),
+      "mesh", manifest_parameters(dir / ".vesica/m.msh.manifest.json"),
       {{"fluid", true}, {"tet_size_mm", 4.0}, {"thickness_by_region", {{"fixed", 4.5}}}});
 
   const auto simulate = run_command(
@@ -90,7 +90,7 @@ TEST(StageParameters, ManifestsListEveryTableEntry) {
                        " -o " + quoted((dir / "report").string()) + " --spike-cmh2o 8"),
       dir);
   ASSERT_EQ(compare.exit_code, 0) << compare.err;
-  expect_every_entry("compare", manifest_parameters(dir / "report.manifest.json"),
+  expect_every_entry("compare", manifest_parameters(dir / ".vesica/report.manifest.json"),
                      {{"spike_cmh2o", 8.0}});
 }
 
