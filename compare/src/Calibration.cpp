@@ -1,5 +1,6 @@
 #include "vesica/compare/Calibration.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "vesica/core/Error.h"
@@ -30,6 +31,13 @@ void straining(double kpa, simulate::MaterialSpec&, simulate::ProtocolSettings& 
   p.straining_kpa = kpa;
 }
 
+// The urethra's opening pressure; its closing pressure (at most the opening one) follows
+// a fitted p_open below it.
+void opening_pressure(double cmh2o, simulate::MaterialSpec&, simulate::ProtocolSettings& p) {
+  p.p_open_cmh2o = cmh2o;
+  p.p_close_cmh2o = std::min(p.p_close_cmh2o, cmh2o);
+}
+
 // A fitted bulk modulus no longer follows mu.
 void bulk_modulus(double kpa, simulate::MaterialSpec& m, simulate::ProtocolSettings&) {
   m.params.erase("K_per_mu");
@@ -47,7 +55,7 @@ const std::vector<ModelParameter>& all_parameters() {
       {{"tau", "s", 1e-4, 1e-6, 1e3, false}, material("tau", 1.0)},
       {{"k1", "Pa", 10.0, 1e-2, 1e5, false}, material("k1", 1.0)},
       {{"k2", "-", 1.0, 1e-2, 100.0, false}, material("k2", 1.0)},
-      {{"p_open", "cmH2O", 20.0, 0.5, 150.0, true}, protocol(&ProtocolSettings::p_open_cmh2o)},
+      {{"p_open", "cmH2O", 20.0, 0.5, 150.0, true}, opening_pressure},
       {{"r1", "cmH2O s/ml", 0.2, 1e-4, 20.0, true}, protocol(&ProtocolSettings::r1_cmh2o_s_per_ml)},
       {{"r2", "cmH2O s2/ml2", 0.02, 1e-5, 5.0, true},
        protocol(&ProtocolSettings::r2_cmh2o_s2_per_ml2)},

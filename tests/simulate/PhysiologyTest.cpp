@@ -214,8 +214,9 @@ TEST(Physiology, DefaultWallsFillTo600MlWithoutAFailedStep) {
     // of its volume): from zero tension its first steps of filling are cut back until the
     // folds take up the volume (within the first millilitre). No step fails once the wall
     // is taut, which is where the fiber walls used to fail (347–567 ml, plane stress).
-    if (what != "neobladder on the CT bladder")
+    if (what != "neobladder on the CT bladder") {
       EXPECT_EQ(r.summary["newton"]["cutbacks"].get<int>(), 0) << what;
+    }
     EXPECT_NEAR(r.rows.back().volume, 600.0, 1e-6) << what;
     std::cout << "[ physiology ] " << what << ": Pdet at 600 ml " << r.rows.back().pdet
               << " cmH2O, " << r.summary["compute_s"] << " s" << std::endl;

@@ -257,11 +257,21 @@ TEST(Protocol, TheDriveIsActivatedWithOnsetPlateauAndFade) {
 // ml/cmH2O): the urethra, closed below p_open = 15 cmH2O, opens once Pves has reached it
 // (a ≥ ½, t ≥ τ_on ln 2), then passes Q = (Pves − p_close)/R1 with p_close = 5 cmH2O, below
 // p_open too, until the flow falls under 0.5 ml/s: Pves within 0.5 cmH2O above p_close.
-TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure) {
+namespace {
+
+// The lumped protocol voided at once by a straining of 10 cmH2O at full activation.
+ProtocolSettings strained_by_10_cmh2o() {
   ProtocolSettings p = lumped_protocol();
   p.hold_s = 0.0;
   p.drive = VoidingDrive::Straining;
   p.straining_kpa = 10.0 * kPaPerCmH2O / 1000.0;
+  return p;
+}
+
+}  // namespace
+
+TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure) {
+  ProtocolSettings p = strained_by_10_cmh2o();
   p.activation_onset_s = 2.0;
   p.p_open_cmh2o = 15.0;
   p.p_close_cmh2o = 5.0;
@@ -297,10 +307,7 @@ TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure)
 // A straining of 10 cmH2O never lifts Pves (10 cmH2O at capacity) to p_open = 50 cmH2O:
 // once fully activated and no longer rising, voiding ends with a note, nothing voided.
 TEST(Protocol, ADriveThatCannotOpenTheUrethraEndsVoidingWithANote) {
-  ProtocolSettings p = lumped_protocol();
-  p.hold_s = 0.0;
-  p.drive = VoidingDrive::Straining;
-  p.straining_kpa = 10.0 * kPaPerCmH2O / 1000.0;
+  ProtocolSettings p = strained_by_10_cmh2o();
   p.p_open_cmh2o = 50.0;
   LumpedBladder model{LumpedOptions{}};
   const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
