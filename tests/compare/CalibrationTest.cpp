@@ -93,9 +93,10 @@ TEST(Calibration, ShearModulusOnTheRealBladderFitsTheFillingCurve) {
   EXPECT_NEAR((*f)["line_baseline_rmse"].get<double>(), 0.7414, 1e-4);
   // a one-parameter neo-Hookean wall does not beat the straight line, and says so
   EXPECT_EQ(c["fitted"].get<bool>(), rmse < 0.7414);
-  if (!c["fitted"].get<bool>())
+  if (!c["fitted"].get<bool>()) {
     EXPECT_NE(c["status"].get<std::string>().find("no better than a straight line"),
               std::string::npos);
+  }
 }
 
 TEST(Calibration, TheWholeRecordingFillingAndVoidingOnTheRealBladder) {
