@@ -6,6 +6,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/SphereMesh.h"
 
 namespace vesica::compare {
 namespace {
@@ -142,12 +143,21 @@ ModelSimulator cystometry_simulator(const CystometryModel& base,
   };
 }
 
+simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m) {
+  const double radius = std::cbrt(3.0 * units::m3_from_ml(reference_ml) / (4.0 * M_PI));
+  simulate::WallModel wall = simulate::sphere_wall(radius, thickness_m, 4);
+  simulate::fix_sphere_rigid_modes(wall);
+  return wall;
+}
+
 CystometryModel surrogate_of(const CystometryModel& model) {
-  // simulate's level 0: the same wall reduced to its sphere-equivalent (reference volume,
-  // mean thickness), the same material, activation, urethra and protocol, milliseconds a
-  // run (docs/physics.md §11).
+  // simulate's level 0 (the same wall's sphere-equivalent, surrogate.run.level = 0) is the
+  // switch that belongs here; measured, it made the whole recording's calibration on the
+  // CT wall need several times the CPU (the output space mapping ran many more wall
+  // runs), so the coarse sphere stays until that is understood.
   CystometryModel surrogate = model;
-  surrogate.run.level = 0;
+  const double thickness = model.wall.thickness.empty() ? 3e-3 : model.wall.thickness[0];
+  surrogate.wall = surrogate_sphere(model.protocol.start_ml, thickness);
   return surrogate;
 }
 

@@ -4,8 +4,9 @@
 // surrogate as ModelSimulators (vesica::simulate::run_cystometry in this process, no
 // files), and the two-stage fit (TwoStageFit.h) over them.
 //
-// The surrogate is simulate's 0-D model (level 0): the same wall reduced to its
-// sphere-equivalent, with the same laws and protocol, milliseconds a run.
+// The surrogate, until simulate offers its 0-D sphere-equivalent model: the same laws and
+// protocol on a coarse triangulated sphere of the reference volume (128 triangles), whose
+// runs cost a small fraction of the patient wall's.
 #include <functional>
 #include <string>
 #include <vector>
@@ -44,8 +45,9 @@ ModelSimulator cystometry_simulator(const CystometryModel& base,
                                     const std::vector<ModelParameter>& parameters,
                                     double capacity_ml, bool voiding);
 
-// The fast surrogate of a model: the same wall, material and protocol on simulate's lumped
-// (level 0) model, the wall's sphere-equivalent.
+// The interim surrogate wall: a sphere of `reference_ml` with the thickness `thickness_m`.
+simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m);
+// The fast surrogate of a model: the same material and protocol on the surrogate wall.
 CystometryModel surrogate_of(const CystometryModel& model);
 
 struct CalibrationProblem {
