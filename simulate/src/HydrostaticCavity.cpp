@@ -136,6 +136,14 @@ void HydrostaticCavity::start_clock() {
   V0_ = volume_;
 }
 
+std::string HydrostaticCavity::voiding_end_note(const std::string& failure) const {
+  if (volume() > reference_volume()) return "";
+  return "voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
+         " ml, below the stress-free volume, where the slack wall's tension field has no "
+         "solution (" +
+         failure + ")";
+}
+
 void HydrostaticCavity::urethra_opens(const UrethraLaw& urethra) {
   q_out_ = urethra.flow(loads_.inside.p0);  // the urethra opens on the current pressure
 }

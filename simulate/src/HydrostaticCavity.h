@@ -32,6 +32,9 @@ class HydrostaticCavity final : public CavityModel {
   void start_clock() override;
   void urethra_opens(const UrethraLaw& urethra) override;
   StepResult try_step(const StepRequest& step) override;
+  // Below the stress-free volume a failed voiding step ends voiding: the wall is slack
+  // there and its tension field may have no solution (docs/simulate.md).
+  std::string voiding_end_note(const std::string& failure) const override;
 
   double volume() const override { return volume_; }
   double pves() const override { return loads_.inside.p0; }
