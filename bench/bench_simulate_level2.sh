@@ -31,7 +31,8 @@ t0=$(date +%s%N)
 capacity=${LEVEL2_CAPACITY_ML:-350}
 extra=()
 [ -n "${LEVEL2_NO_VOID:-}" ] && extra+=(--no-void)
-"$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 --mu-kpa 3 \
+"$build/bin/vesica-simulate" "$work/bladder.vtu" -o "$work/level2" --level 2 \
+  --material neo-hookean --mu-kpa 3 --drive straining \
   --capacity-ml "$capacity" --straining-kpa 4 --residual-ml 45 \
   --linear-solver "${LEVEL2_LINEAR_SOLVER:-krylov}" --fluid-dt-s "${LEVEL2_FLUID_DT_S:-0}" \
   "${extra[@]}" --json > "$work/simulate.json" || true

@@ -1,8 +1,10 @@
 // Benchmarks of issues 6 and 7, printed as one JSON object:
 //  - balloon: 5,000-triangle sphere, 20 pressure steps to 95 % of the limit pressure;
 //  - cystometry: 50 → 350 ml at 50 ml/min and voiding on spheres of ≈ 2,300 and ≈ 17,000
-//    triangles (neo-Hookean μ = 3 kPa, K = 1000 μ, voided by straining), no output files.
-// Usage: bench_simulate [balloon|cystometry-small|cystometry-large|balloon-and-small|all]
+//    triangles (neo-Hookean μ = 3 kPa, K = 1000 μ, voided by straining), no output files;
+//  - lumped: the default bladder's whole cystometry (50 → 350 ml, voided by the detrusor)
+//    at level 0, repeated: what one simulation of calibration's global search costs.
+// Usage: bench_simulate [balloon|cystometry-small|cystometry-large|balloon-and-small|lumped|all]
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -63,7 +65,8 @@ nlohmann::json cystometry(int n, double target_s) {
   }
   fix_regions(wall, Eigen::Vector3d(0, 0, -1), 0.0);
   ProtocolSettings p;
-  p.straining_kpa = 4.0;  // voiding by abdominal straining, as in the demo
+  p.drive = VoidingDrive::Straining;  // as the figures before the detrusor drive
+  p.straining_kpa = 4.0;
   RunOptions o;
   const auto t0 = std::chrono::steady_clock::now();
   const CystometryResult r =
@@ -78,6 +81,26 @@ nlohmann::json cystometry(int n, double target_s) {
   return j;
 }
 
+// The default bladder (20 ml stress-free sphere) at level 0, `repeats` whole cystometries.
+nlohmann::json lumped(int repeats) {
+  const double R = std::cbrt(3.0 * units::m3_from_ml(20.0) / (4.0 * 3.14159265358979));
+  WallModel wall = sphere_wall(R, 3e-3, 10);
+  fix_sphere_rigid_modes(wall);
+  RunOptions o;
+  o.level = 0;
+  CystometryResult r;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < repeats; ++i)
+    r = run_cystometry(wall, {"bladder", {}}, ProtocolSettings{}, o);
+  nlohmann::json j = {{"repeats", repeats},
+                      {"completed", r.completed},
+                      {"seconds_per_cystometry", seconds_since(t0) / repeats},
+                      {"target_seconds", 0.05}};
+  for (const char* key : {"pdet_at_capacity_cmh2o", "qmax_ml_s", "pvr_ml", "voiding_drive"})
+    if (r.summary.contains(key)) j[key] = r.summary[key];
+  return j;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -89,5 +112,7 @@ int main(int argc, char** argv) {
     out["cystometry_2300_triangles"] = cystometry(17, 10.0);
   if (what == "cystometry-large" || what == "all")
     out["cystometry_17000_triangles"] = cystometry(46, 60.0);
+  if (what == "lumped" || what == "all" || what == "balloon-and-small")
+    out["lumped_default_bladder"] = lumped(20);
   std::cout << out.dump(2) << std::endl;
 }

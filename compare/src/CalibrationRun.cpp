@@ -39,7 +39,15 @@ bool fits(const std::vector<ModelParameter>& specs, const char* name) {
   return std::any_of(specs.begin(), specs.end(), [&](const auto& s) { return s.fit.name == name; });
 }
 
-std::string material_for(const std::vector<ModelParameter>& specs) {
+// The drive that voids the model: straining when it is fitted or given, else the detrusor.
+bool strains(const std::vector<ModelParameter>& specs, const CalibrationModel& m) {
+  return fits(specs, "straining") || m.straining_kpa > 0;
+}
+
+std::string material_for(const std::vector<ModelParameter>& specs, const CalibrationModel& m,
+                         bool voiding) {
+  // A detrusor-voided model needs a muscle: the default bladder wall (docs/simulate.md).
+  if (voiding && !strains(specs, m)) return "bladder";
   if (fits(specs, "k1") || fits(specs, "k2")) return "fibers";
   if (fits(specs, "beta") || fits(specs, "tau")) return "maxwell";
   return "neo-hookean";
@@ -84,14 +92,14 @@ CalibrationTargets targets_for(const CompareOptions& o, const RecordingAnalysis&
 }
 
 CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
-                          const std::vector<ModelParameter>& specs,
+                          const std::vector<ModelParameter>& specs, bool voiding,
                           std::vector<std::string>& notes) {
   CystometryModel m;
   simulate::WallOptions wall_options;
   wall_options.thickness_mm = o.simulation.thickness_mm;
   wall_options.residual_ml = o.simulation.start_ml;
   m.wall = simulate::load_wall(o.mesh, wall_options);
-  m.material.name = material_for(specs);
+  m.material.name = material_for(specs, o.simulation, voiding);
   m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
   if (o.simulation.k_kpa > 0.0)
     m.material.params["K"] = units::pa_from_kpa(o.simulation.k_kpa);
@@ -107,8 +115,12 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
   const auto& r = a.recording;
   if (!r.pabd_cmh2o.empty())
     m.protocol.pabd_cmh2o = std::max(0.0, r.pabd_cmh2o[a.ics.capacity_row]);
-  if (o.simulation.straining_kpa > 0) m.protocol.straining_kpa = o.simulation.straining_kpa;
-  if (o.simulation.detrusor_kpa > 0) m.protocol.detrusor_kpa = o.simulation.detrusor_kpa;
+  if (strains(specs, o.simulation)) {
+    m.protocol.drive = simulate::VoidingDrive::Straining;
+    if (o.simulation.straining_kpa > 0) m.protocol.straining_kpa = o.simulation.straining_kpa;
+  }
+  if (o.simulation.detrusor_kpa > 0)
+    m.material.params["contractility"] = units::pa_from_kpa(o.simulation.detrusor_kpa);
   return m;
 }
 
@@ -122,7 +134,7 @@ CalibrationResult calibrate_from_options(const CompareOptions& o, const Recordin
                                    [](const ModelParameter& p) { return p.fit.voiding; });
   pb.targets = targets_for(o, a, comparison, voiding);
   std::vector<std::string> notes;
-  pb.model = model_for(o, a, pb.parameters, notes);
+  pb.model = model_for(o, a, pb.parameters, voiding, notes);
   if (a.ics.capacity_ml) pb.data_end_ml = *a.ics.capacity_ml;
   pb.use_surrogate = o.simulation.surrogate;
   pb.budget.surrogate_starts = o.simulation.surrogate_starts;

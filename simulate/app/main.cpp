@@ -27,29 +27,41 @@ using namespace vesica::simulate;
 
 namespace {
 
-// The material as the library takes it (SI) from the table's clinical units.
+bool given(double value) {
+  return value != kMaterialDefault;
+}
+
+// The material as the library takes it (SI) from the table's clinical units: only the
+// parameters given, the rest is the named material's own (MaterialRegistry.h).
 MaterialSpec material_spec(const SimulateSettings& c) {
-  MaterialSpec spec{c.material, {{"mu", units::pa_from_kpa(c.mu_kpa)}}};
-  if (c.k_kpa > 0.0)
-    spec.params["K"] = units::pa_from_kpa(c.k_kpa);
-  else
-    spec.params["K_per_mu"] = 1000.0;  // nearly incompressible (docs/physics.md §2.7)
-  if (c.material == "fibers") {
-    spec.params["k1"] = units::pa_from_kpa(c.k1_kpa);
-    spec.params["k2"] = c.k2;
-  }
+  MaterialSpec spec{c.material, {}};
+  auto set = [&spec](const char* key, double value) {
+    if (given(value)) spec.params[key] = value;
+  };
+  auto set_kpa = [&spec](const char* key, double kpa) {
+    if (given(kpa)) spec.params[key] = units::pa_from_kpa(kpa);
+  };
+  set_kpa("mu", c.mu_kpa);
+  set_kpa("K", c.k_kpa);
+  const bool fibers = c.material != "neo-hookean" && c.material != "maxwell";
+  if (!fibers && (given(c.k1_kpa) || given(c.k2)))
+    usage_error("--k1-kpa/--k2 need a material with fibers (bladder, neobladder, fibers)");
+  set_kpa("k1", c.k1_kpa);
+  set("k2", c.k2);
   if (c.beta.size() != c.tau_s.size())
     usage_error("--beta and --tau-s need the same number of values");
   if (!c.beta.empty() && c.material == "neo-hookean")
-    usage_error("--beta/--tau-s need --material maxwell or fibers");
+    usage_error("--beta/--tau-s need a viscoelastic material (not neo-hookean)");
   for (std::size_t a = 0; a < c.beta.size(); ++a) {
     spec.params["beta" + std::to_string(a + 1)] = c.beta[a];
     spec.params["tau" + std::to_string(a + 1)] = c.tau_s[a];
   }
-  if (c.beta.empty() && c.material == "maxwell") {  // thesis fit (docs/physics.md §2)
-    spec.params["beta1"] = 0.15;
-    spec.params["tau1"] = 1e-4;
-  }
+  set_kpa("tone", c.tone_kpa);
+  set_kpa("contractility", c.detrusor_kpa);
+  set("optimal_stretch", c.optimal_stretch);
+  set("stretch_width", c.stretch_width);
+  set("hill_a", c.hill_a);
+  set("hill_vmax", c.hill_vmax_per_s);
   return spec;
 }
 

@@ -3,9 +3,9 @@
 // its urine: to try ONE step (to a volume, or in time) and say whether it converged, and
 // to report its state. The protocol owns everything else: the phases (settle, fill, hold,
 // activate, void, stop), the time-dependent loads (Pabd, straining, the detrusor's
-// activation ramp), the urethra law, validation, the bookkeeping of time, infused and
-// voided volume, the history rows, the frames' schedule, the cut-backs of failed steps and
-// the summary. SI units throughout.
+// activation curve), the urethra law and when it opens, validation, the bookkeeping of time,
+// infused and voided volume, the history rows, the frames' schedule, the cut-backs of failed steps
+// and the summary. SI units throughout.
 //
 // Two models implement it: HydrostaticCavity (level 1: the urine as an enclosed volume
 // with a hydrostatic pressure) and fluid::NavierStokesCavity (level 2: the urine as a flow
@@ -30,8 +30,8 @@ namespace vesica::simulate {
 
 // The protocol's time-dependent loads at one instant.
 struct ProtocolLoads {
-  double pabd_pa = 0.0;           // abdominal pressure at the reference height, straining included
-  double active_stress_pa = 0.0;  // active detrusor fiber stress T_a(t)
+  double pabd_pa = 0.0;     // abdominal pressure at the reference height, straining included
+  double activation = 0.0;  // detrusor activation a(t) ∈ [0, 1] (docs/physics.md §7.2)
 };
 
 // One timed step the protocol asks of a model.
@@ -78,8 +78,9 @@ class CavityModel {
   virtual StepResult try_volume_step(double volume_m3, const ProtocolLoads& loads) = 0;
   // The protocol's clock starts (t = 0) at the model's present state.
   virtual void start_clock() {}
-  // Voiding begins with this urethra law (the request's urethra of every voiding step).
-  virtual void begin_voiding(const UrethraLaw& /*urethra*/) {}
+  // The urethra opens (Pves reached its opening pressure) with this law: the request's
+  // urethra of every step from now on.
+  virtual void urethra_opens(const UrethraLaw& /*urethra*/) {}
   // One timed step. Converged: the model has moved to its end. Not converged: the state is
   // as before the attempt, so that the protocol may retry a shorter step.
   virtual StepResult try_step(const StepRequest& step) = 0;

@@ -6,9 +6,11 @@
 
 #include "CystometryProtocol.h"
 #include "HydrostaticCavity.h"
+#include "LumpedCavity.h"
 #include "PrestressReference.h"
 #include "ProtocolRanges.h"
 #include "fluid/NavierStokesCavity.h"
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/MaterialRegistry.h"
@@ -54,7 +56,13 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
           "outlet resistances r1, r2 must be >= 0 and not both zero");
   require(p.stop_flow_ml_s > 0.0 && p.max_void_s > 0.0,
           "stop_flow_ml_s and max_void_s must be > 0");
-  if (o.level != 1 && o.level != 2) usage_error("level must be 1 or 2");
+  require(p.p_close_cmh2o <= p.p_open_cmh2o && p.urethra_half_open_cmh2o >= 0.0,
+          "the urethra closes at or below its opening pressure: need p_close_cmh2o <= "
+          "p_open_cmh2o");
+  require(p.activation_onset_s >= 0.0 && p.activation_plateau_s >= 0.0 &&
+              p.activation_fade_s >= 0.0 && p.straining_kpa >= 0.0,
+          "activation times and straining_kpa must be >= 0");
+  if (o.level < 0 || o.level > 2) usage_error("level must be 0, 1 or 2");
   if (o.level == 2) {
     if (!(o.level2.fill_dt_s >= 0.0 && o.level2.void_dt_s > 0.0))
       usage_error("level 2 time steps must be > 0 (the filling's 0: adaptive)");
@@ -82,12 +90,26 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
   if (options.level == 2)
     model = std::make_unique<fluid::NavierStokesCavity>(wall, fluid::reference_urine(*urine, wall),
                                                         *material, settings, options);
+  else if (options.level == 0)
+    model = std::make_unique<LumpedCavity>(wall, *material, settings);
   else
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
   CystometryResult result = CystometryProtocol(settings, options).run(*model);
   if (!options.output_dir.empty())
-    io::write_history_csv(result.history, options.output_dir / "history.csv");
+    write_labelled_history(result, options.output_dir / "history.csv");
   return result;
+}
+
+std::string history_label(const CystometryResult& result) {
+  const std::string drive = result.summary.value("voiding_drive", "none");
+  if (drive == "detrusor") return "voided by detrusor contraction";
+  if (drive == "straining") return "voided by abdominal straining";
+  return "not voided";
+}
+
+void write_labelled_history(const CystometryResult& result, const std::filesystem::path& csv) {
+  write_text_atomically(csv, "# vesica-simulate cystometry, " + history_label(result) + "\n" +
+                                 io::history_csv_text(result.history));
 }
 
 }  // namespace vesica::simulate

@@ -29,10 +29,10 @@ constexpr double kFillGrowth = 1.5;
 // below twice that.
 constexpr double kVolumeFloorMl = 1.0;
 
-double ramp(double t, double duration) {
-  if (t <= 0.0) return 0.0;
-  return duration > 0.0 ? std::min(1.0, t / duration) : 1.0;
-}
+// Volume change (cmH2O) below which an isovolumetric contraction has stopped rising.
+constexpr double kStillPressureCmH2O = 0.01;
+// Onset time constants after which the drive is at least 1 − e⁻⁵ ≈ 99.3 % activated.
+constexpr double kFullOnsets = 5.0;
 
 // The one-line reason of a run that stopped on a failed step (t in s, V in m³).
 std::string step_failure_text(double t_s, double volume_m3, const std::string& reason) {
@@ -43,15 +43,15 @@ std::string step_failure_text(double t_s, double volume_m3, const std::string& r
   return s.str();
 }
 
-// Why voiding cannot start at cavity pressure pves_pa, or "" when it can: without detrusor
-// contraction or straining nothing raises Pves to the opening pressure, and waiting
-// max_void_s would only add steps.
-std::string no_voiding_note(const ProtocolSettings& settings, double pves_pa) {
-  if (settings.detrusor_kpa > 0.0 || settings.straining_kpa > 0.0 ||
-      units::cmh2o_from_pa(pves_pa) >= settings.p_open_cmh2o)
-    return "";
-  return "no voiding: Pves stays below the opening pressure without detrusor_kpa or "
-         "straining_kpa";
+// Why voiding cannot start at all, or "": straining needs a straining pressure.
+std::string no_drive_note(const ProtocolSettings& settings) {
+  if (settings.drive == VoidingDrive::Straining && settings.straining_kpa <= 0.0)
+    return "no voiding: the drive is straining but straining_kpa is 0";
+  return "";
+}
+
+std::string drive_name(VoidingDrive drive) {
+  return drive == VoidingDrive::Detrusor ? "detrusor" : "straining";
 }
 
 // The progress line after a history row ("filling 120 ml") and the fraction of the
@@ -75,8 +75,11 @@ std::pair<std::string, double> protocol_progress(const HistoryRow& row,
 CystometryProtocol::CystometryProtocol(const ProtocolSettings& settings, const RunOptions& options)
     : settings_(settings),
       options_(options),
-      urethra_(UrethraLaw::from_clinical_units(settings.p_open_cmh2o, settings.r1_cmh2o_s_per_ml,
-                                               settings.r2_cmh2o_s2_per_ml2)) {}
+      urethra_(UrethraLaw::from_clinical_units(
+          settings.p_open_cmh2o, settings.p_close_cmh2o, settings.r1_cmh2o_s_per_ml,
+          settings.r2_cmh2o_s2_per_ml2, settings.urethra_half_open_cmh2o)),
+      activation_{settings.activation_onset_s, settings.activation_plateau_s,
+                  settings.activation_fade_s} {}
 
 CystometryProtocol::~CystometryProtocol() = default;
 
@@ -110,7 +113,15 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
     vesica::log()->error("{}", result_.failure);
   }
   take_notes();
-  frame(true);
+  try {
+    frame(true);
+  } catch (const std::runtime_error& e) {
+    // The wall's stresses at the last converged state may fail to evaluate where the step
+    // after it failed (a tension field without a solution): the history and the summary
+    // up to that state are still the run's results, and are written.
+    if (result_.completed) throw;
+    result_.notes.push_back(std::string("no last frame: ") + e.what());
+  }
   if (series_) series_->finish();
   model.finish_frames();
   summarize(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -118,10 +129,11 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
 }
 
 ProtocolLoads CystometryProtocol::loads_at(double t) const {
-  const double active = t_void_ >= 0.0 ? ramp(t - t_void_, settings_.activation_ramp_s) : 0.0;
+  const double a = t_void_ >= 0.0 ? activation_.at(t - t_void_) : 0.0;
+  const bool straining = settings_.drive == VoidingDrive::Straining;
   return {units::pa_from_cmh2o(settings_.pabd_cmh2o) +
-              active * units::pa_from_kpa(settings_.straining_kpa),
-          active * units::pa_from_kpa(settings_.detrusor_kpa)};
+              (straining ? a * units::pa_from_kpa(settings_.straining_kpa) : 0.0),
+          straining ? 0.0 : a};
 }
 
 // Gravity and the reference volume at t = 0, then up to the start volume, quasi-static.
@@ -209,8 +221,12 @@ void CystometryProtocol::hold() {
   }
 }
 
+// The drive is activated from the end of filling; the urethra opens once Pves reaches
+// p_open (an isovolumetric contraction until then), passes its law's flow and closes at
+// p_close. Voiding ends when the flow, once above stop_flow_ml_s, falls below it (closing
+// included), when the contraction can no longer open the urethra, or after max_void_s.
 void CystometryProtocol::void_bladder() {
-  if (const std::string why = no_voiding_note(settings_, model_->pves()); !why.empty()) {
+  if (const std::string why = no_drive_note(settings_); !why.empty()) {
     result_.notes.push_back(why);
     vesica::log()->warn("{}", why);
     return;
@@ -218,19 +234,23 @@ void CystometryProtocol::void_bladder() {
   voiding_ = true;
   t_void_ = time_;
   next_frame_ = time_;
-  model_->begin_voiding(urethra_);
   const bool adaptive = rules_.fixed_void_step_s <= 0.0;
   double dt = adaptive ? kFirstVoidStepS : rules_.fixed_void_step_s;
   bool flowing = false;
   const double stop = units::m3s_from_mls(settings_.stop_flow_ml_s);
   const double V_floor = units::m3_from_ml(kVolumeFloorMl);
+  peak_pves_ = model_->pves();
   while (time_ - t_void_ < settings_.max_void_s) {
-    const double V_before = model_->volume(), t_before = time_;
+    if (!urethra_open_ && model_->pves() >= urethra_.opening_pressure()) {
+      urethra_open_ = true;
+      model_->urethra_opens(urethra_);
+    }
+    const double V_before = model_->volume(), t_before = time_, p_before = model_->pves();
     if (!adaptive) dt = rules_.fixed_void_step_s;
     if (model_->outflow() > 0.0) dt = std::min(dt, 0.5 * (V_before - V_floor) / model_->outflow());
     const double dt_asked = dt;
     try {
-      advance(dt, 0.0, true);
+      advance(dt, 0.0, urethra_open_);
     } catch (const StepFailed& e) {
       const std::string note = model_->voiding_end_note(e.what());
       if (note.empty()) throw;
@@ -239,9 +259,14 @@ void CystometryProtocol::void_bladder() {
       break;
     }
     record();
+    peak_pves_ = std::max(peak_pves_, model_->pves());
     const double Q = model_->outflow();
-    if (Q >= stop) flowing = true;
-    if (flowing && Q < stop) break;
+    if (urethra_open_) {
+      if (Q >= stop) flowing = true;
+      if ((flowing && Q < stop) || Q <= 0.0) break;  // the flow stopped, or the urethra closed
+    } else if (contraction_spent(p_before)) {
+      break;
+    }
     if (model_->volume() < 2.0 * V_floor) break;
     if (!adaptive) continue;
     // From the step actually taken: a cut-back shortened it. A cut-back says the step size
@@ -251,6 +276,25 @@ void CystometryProtocol::void_bladder() {
     max_growth_ = dt_taken < dt_asked * (1.0 - 1e-9) ? 1.0 : std::min(2.0, 1.25 * max_growth_);
     dt = next_void_step(dt_taken, std::abs(V_before - model_->volume()));
   }
+  if (!urethra_open_) {
+    std::ostringstream note;
+    note.precision(3);
+    note << "no voiding: Pves peaked at " << units::cmh2o_from_pa(peak_pves_)
+         << " cmH2O, below the opening pressure of " << settings_.p_open_cmh2o << " cmH2O ("
+         << drive_name(settings_.drive) << " drive)";
+    result_.notes.push_back(note.str());
+    vesica::log()->warn("{}", note.str());
+  }
+}
+
+// Whether a drive that has not opened the urethra never will: fully activated (or fading)
+// and Pves no longer rising over the last step (p_before: Pves before it).
+bool CystometryProtocol::contraction_spent(double p_before) const {
+  const double t = time_ - t_void_;
+  const bool full = t >= kFullOnsets * settings_.activation_onset_s;
+  const bool fading = t > settings_.activation_plateau_s;
+  const bool still = model_->pves() - p_before < units::pa_from_cmh2o(kStillPressureCmH2O);
+  return fading || (full && still);
 }
 
 // Aim at a volume per step, growing at most max_growth_ (2x, less after a cut-back). A taut
@@ -321,8 +365,13 @@ void CystometryProtocol::summarize(double seconds) {
   s["compute_s"] = seconds;
   s["phase_compute_s"] = phase_seconds_;
   s["outlet"] = {{"p_open_cmh2o", settings_.p_open_cmh2o},
+                 {"p_close_cmh2o", settings_.p_close_cmh2o},
                  {"r1_cmh2o_s_per_ml", settings_.r1_cmh2o_s_per_ml},
-                 {"r2_cmh2o_s2_per_ml2", settings_.r2_cmh2o_s2_per_ml2}};
+                 {"r2_cmh2o_s2_per_ml2", settings_.r2_cmh2o_s2_per_ml2},
+                 {"half_open_cmh2o", settings_.urethra_half_open_cmh2o}};
+  // What emptied the bladder: the drive when the urethra opened, else none.
+  s["voiding_drive"] = urethra_open_ ? drive_name(settings_.drive) : "none";
+  if (voiding_) s["pves_max_voiding_cmh2o"] = units::cmh2o_from_pa(peak_pves_);
   model_->add_summary(s);
 }
 

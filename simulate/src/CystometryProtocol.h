@@ -1,8 +1,9 @@
 #pragma once
 // The cystometry protocol (docs/physics.md §7), run once over any cavity model
 // (CavityModel.h): settle to the start volume, fill at the infusion rate to capacity, hold,
-// then activate (detrusor contraction and abdominal straining ramped in) and void through
-// the urethra law (docs/physics.md §5) until the flow stops. It owns the clock, the
+// then activate the voiding drive (the detrusor's contraction, or abdominal straining,
+// along ActivationCurve.h) and void through the urethra law (docs/physics.md §5), which
+// opens and closes, until the flow stops. It owns the clock, the
 // time-dependent loads, the infused and voided volumes, the history rows, the frames'
 // schedule, the cut-backs of failed steps (halving up to the model's limit) and the
 // summary; the model only steps and reports its state.
@@ -12,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "ActivationCurve.h"
 #include "CavityModel.h"
 #include "UrethraLaw.h"
 #include "vesica/simulate/Cystometry.h"
@@ -47,6 +49,7 @@ class CystometryProtocol {
   StepResult advance(double dt, double q_in, bool outlet);
   // The next adaptive voiding step from the one just taken (dt, draining dV).
   double next_void_step(double dt, double dV) const;
+  bool contraction_spent(double p_before) const;
   ProtocolLoads loads_at(double t) const;
   void record();
   void frame(bool force);
@@ -56,6 +59,7 @@ class CystometryProtocol {
   const ProtocolSettings& settings_;
   const RunOptions& options_;
   const UrethraLaw urethra_;
+  const ActivationCurve activation_;
   CavityModel* model_ = nullptr;
   StepRules rules_;
   std::unique_ptr<VtuSeriesWriter> series_;
@@ -68,6 +72,8 @@ class CystometryProtocol {
   double max_growth_ = 2.0;                      // of the next adaptive voiding step
   std::size_t capacity_index_ = 0;               // the last filling (or hold) row
   bool voiding_ = false, filled_ = false;
+  bool urethra_open_ = false;
+  double peak_pves_ = 0.0;                       // the highest Pves while voiding (Pa)
   std::map<std::string, double> phase_seconds_;  // wall-clock time of settle, filling, voiding
 };
 

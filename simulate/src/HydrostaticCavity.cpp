@@ -41,7 +41,7 @@ HydrostaticCavity::HydrostaticCavity(const WallModel& wall, const Material& mate
 
 void HydrostaticCavity::set_loads(const ProtocolLoads& loads) {
   loads_.outside.p0 = loads.pabd_pa;
-  loads_.active_stress_pa = loads.active_stress_pa;
+  loads_.activation = loads.activation;
 }
 
 bool HydrostaticCavity::attempt(double dt, const ProtocolLoads& loads, const UrethraLaw* urethra,
@@ -49,7 +49,9 @@ bool HydrostaticCavity::attempt(double dt, const ProtocolLoads& loads, const Ure
   const std::vector<Eigen::Vector3d> x_saved = x_;
   const double p_saved = loads_.inside.p0;
   set_loads(loads);
-  loads_.dt_s = dt;
+  // A volume step without time (settling to the start volume) is a state held for long,
+  // as before a cystometry: the wall's relaxed response, not its instantaneous one.
+  loads_.dt_s = dt > 0.0 ? dt : kRelaxedStep;
   // Drag towards the last converged wall; a volume step without time (reference to
   // start volume) takes the time the infusion rate would need for it.
   const double drag_dt =
@@ -134,7 +136,15 @@ void HydrostaticCavity::start_clock() {
   V0_ = volume_;
 }
 
-void HydrostaticCavity::begin_voiding(const UrethraLaw& urethra) {
+std::string HydrostaticCavity::voiding_end_note(const std::string& failure) const {
+  if (volume() > reference_volume()) return "";
+  return "voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
+         " ml, below the stress-free volume, where the slack wall's tension field has no "
+         "solution (" +
+         failure + ")";
+}
+
+void HydrostaticCavity::urethra_opens(const UrethraLaw& urethra) {
   q_out_ = urethra.flow(loads_.inside.p0);  // the urethra opens on the current pressure
 }
 

@@ -30,7 +30,7 @@ class HydrostaticCavity final : public CavityModel {
 
   StepResult try_volume_step(double volume_m3, const ProtocolLoads& loads) override;
   void start_clock() override;
-  void begin_voiding(const UrethraLaw& urethra) override;
+  void urethra_opens(const UrethraLaw& urethra) override;
   StepResult try_step(const StepRequest& step) override;
   // Where another model on the same wall stands (level 2 below the stress-free volume,
   // docs/navier-stokes.md §8).
@@ -43,6 +43,9 @@ class HydrostaticCavity final : public CavityModel {
   // committed history, under loads.
   void continue_from(const std::vector<Eigen::Vector3d>& x, const MembraneProblem& wall_state,
                      const Takeover& state, const ProtocolLoads& loads);
+  // Below the stress-free volume a failed voiding step ends voiding: the wall is slack
+  // there and its tension field may have no solution (docs/simulate.md).
+  std::string voiding_end_note(const std::string& failure) const override;
 
   double volume() const override { return volume_; }
   double pves() const override { return loads_.inside.p0; }

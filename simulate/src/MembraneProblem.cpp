@@ -160,7 +160,7 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     const auto xe = corners(x, wall_.triangles[e]);
     MaterialPoint point = points_[e];
     point.dt_s = loads.dt_s;
-    point.active_stress_pa = loads.active_stress_pa;
+    point.activation = loads.activation;
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
     double* h_new = history_size_ ? &self->history_new_[e * history_size_] : nullptr;
     const MembraneResponse m = membrane_response(geometry_[e], xe, material_, point, J2_new_[e],
@@ -256,7 +256,7 @@ std::vector<MembraneStressOutput> MembraneProblem::element_outputs(
   for_each_element([&](std::size_t e) {
     MaterialPoint point = points_[e];
     point.dt_s = 0.0;  // no further relaxation: Q stays the committed one
-    point.active_stress_pa = loads.active_stress_pa;
+    point.activation = loads.activation;
     std::vector<double> scratch(history_size_);
     // The committed state is what history_new_ held at the last commit.
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;

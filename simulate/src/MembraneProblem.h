@@ -24,7 +24,7 @@ struct WallLoads {
   Eigen::Vector3d wall_gravity = Eigen::Vector3d::Zero();  // m/s² acting on the wall mass
   double wall_density = 920.0;                             // kg/m³ (docs/physics.md §2)
   double support_stiffness = 0.0;  // springs of the support region, Pa/m (per unit area)
-  double active_stress_pa = 0.0;   // detrusor T_a(t)
+  double activation = 0.0;         // detrusor activation a(t) ∈ [0, 1]
   double dt_s = 0.0;               // time step (viscoelastic history)
   // Wall inertia of a dynamic step (BossakNewmark.h); empty coefficient = quasi-static.
   InertiaTerm inertia;

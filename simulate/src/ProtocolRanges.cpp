@@ -31,9 +31,14 @@ void require_protocol_ranges(const ProtocolSettings& p, const RunOptions& o) {
   within(p.p_open_cmh2o, "p-open-cmh2o", 0, 300, "cmH2O", "outlet opening pressure");
   within(p.r1_cmh2o_s_per_ml, "r1", 0, 100, "cmH2O s/ml", "outlet linear resistance");
   within(p.r2_cmh2o_s2_per_ml2, "r2", 0, 100, "cmH2O s2/ml2", "outlet quadratic resistance");
-  within(p.detrusor_kpa, "detrusor-kpa", 0, 1000, "kPa", "peak active stress of muscle");
+  within(p.p_close_cmh2o, "p-close-cmh2o", 0, 300, "cmH2O", "outlet closing pressure");
+  within(p.urethra_half_open_cmh2o, "urethra-half-open-cmh2o", 0, 100, "cmH2O",
+         "pressure over which the urethra's lumen opens");
   within(p.straining_kpa, "straining-kpa", 0, 50, "kPa", "50 kPa is about 500 cmH2O");
-  within(p.activation_ramp_s, "activation-ramp-s", 0, 60, "s", "ramp of the activation");
+  within(p.activation_onset_s, "activation-onset-s", 0, 60, "s", "onset of the activation");
+  within(p.activation_plateau_s, "activation-plateau-s", 0, 3600, "s",
+         "frames are written all through the plateau");
+  within(p.activation_fade_s, "activation-fade-s", 0, 60, "s", "fade of the activation");
   within(p.stop_flow_ml_s, "stop-flow-ml-s", 0, 50, "ml/s", "flows stay below 50 ml/s", true);
   within(p.max_void_s, "max-void-s", 0, 3600, "s", "frames are written all through voiding", true);
   within(p.support_kpa_per_mm, "support-kpa-per-mm", 0, 1000, "kPa/mm", "support springs");

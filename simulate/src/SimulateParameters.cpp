@@ -30,26 +30,50 @@ void add_list(ParameterTable& t, const std::string& name, std::vector<double>& f
       [&field] { return nlohmann::json(field); });
 }
 
+// A material parameter in `range`, or "auto" for the named material's own value.
+void add_material_number(ParameterTable& t, const std::string& name, double& field,
+                         const std::string& unit, NumberRange range, const std::string& help) {
+  t.number_or_word(name, field, kMaterialDefault, unit,
+                   range.or_word("auto", "the material's own (docs/simulate.md)"), help);
+}
+
 void add_material_entries(SimulateSettings& s, ParameterTable& t) {
-  t.choice("material", s.material, {"neo-hookean", "maxwell", "fibers"},
-           "wall material (docs/physics.md §2)");
-  t.number("mu_kpa", s.mu_kpa, "kPa",
-           NumberRange::at_least(0.1).at_most(100).because(
-               "the calibration's range; a stiffer wall barely moves under cystometric pressures"),
-           "shear modulus mu");
-  t.number_or_word("k_kpa", s.k_kpa, 0.0, "kPa",
-                   NumberRange::at_least(0.1).at_most(1e6).or_word(
-                       "auto", "1000 mu: nearly incompressible, like the water-rich wall"),
-                   "bulk modulus K (the thesis's 10 kPa dilates and peaks near 1.5x the "
-                   "residual volume)");
-  t.number("k1_kpa", s.k1_kpa, "kPa", NumberRange::greater_than(0).at_most(1000),
-           "fiber stiffness k1 (material fibers)");
-  t.number("k2", s.k2, "-", NumberRange::greater_than(0).at_most(100),
-           "fiber exponent k2 (material fibers)");
+  t.choice("material", s.material, {"bladder", "neobladder", "neo-hookean", "maxwell", "fibers"},
+           "wall material (docs/physics.md §2): the normal adult detrusor, an ileal neobladder, "
+           "or a plain law");
+  add_material_number(
+      t, "mu_kpa", s.mu_kpa, "kPa",
+      NumberRange::at_least(0.1).at_most(100).because(
+          "the calibration's range; a stiffer wall barely moves under cystometric pressures"),
+      "shear modulus mu of the matrix");
+  add_material_number(t, "k_kpa", s.k_kpa, "kPa", NumberRange::at_least(0.1).at_most(1e6),
+                      "bulk modulus K (material default 1000 mu, nearly incompressible; the "
+                      "thesis's 10 kPa dilates and peaks near 1.5x the residual volume)");
+  add_material_number(t, "k1_kpa", s.k1_kpa, "kPa", NumberRange::greater_than(0).at_most(1000),
+                      "fiber stiffness k1 (bladder, neobladder, fibers)");
+  add_material_number(t, "k2", s.k2, "-", NumberRange::greater_than(0).at_most(100),
+                      "fiber exponent k2 (bladder, neobladder, fibers)");
   add_list(t, "beta", s.beta, "-", NumberRange::at_least(0).at_most(50),
-           "Maxwell branch strengths (material maxwell or fibers)");
+           "Maxwell branch strengths (none: the material's branches)");
   add_list(t, "tau_s", s.tau_s, "s", NumberRange::at_least(1e-6).at_most(1000),
            "Maxwell relaxation times, one per beta");
+  add_material_number(t, "tone_kpa", s.tone_kpa, "kPa", NumberRange::at_least(0).at_most(100),
+                      "detrusor tone: nominal active fiber stress at rest");
+  add_material_number(t, "detrusor_kpa", s.detrusor_kpa, "kPa",
+                      NumberRange::at_least(0).at_most(1000),
+                      "detrusor contractility: nominal active fiber stress added at full "
+                      "activation and optimal length");
+  add_material_number(t, "optimal_stretch", s.optimal_stretch, "-",
+                      NumberRange::at_least(0.5).at_most(5),
+                      "fiber stretch (from the reference) of the detrusor's greatest force");
+  add_material_number(t, "stretch_width", s.stretch_width, "-",
+                      NumberRange::at_least(0.1).at_most(5),
+                      "width of the detrusor's length-tension curve");
+  add_material_number(t, "hill_a", s.hill_a, "-", NumberRange::at_least(0.05).at_most(5),
+                      "Hill's a/T0: curvature of the detrusor's force-velocity relation");
+  add_material_number(t, "hill_vmax_per_s", s.hill_vmax_per_s, "1/s",
+                      NumberRange::at_least(1e-3).at_most(10),
+                      "the detrusor's unloaded shortening rate");
 }
 
 void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
@@ -103,17 +127,30 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
            "resting abdominal pressure");
   t.flag_off("no_void", p.void_after_fill, "stop after filling (and hold)");
   t.number("p_open_cmh2o", p.p_open_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(200),
-           "urethral opening pressure");
+           "urethral opening pressure (Pves)");
+  t.number("p_close_cmh2o", p.p_close_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(200),
+           "urethral closing pressure (Pves), at most p_open_cmh2o");
+  t.number("urethra_half_open_cmh2o", p.urethra_half_open_cmh2o, "cmH2O",
+           NumberRange::at_least(0).at_most(100),
+           "collapsible urethra: pressure above closing at which its lumen is about half "
+           "open (0: rigid, the quadratic law)");
   t.number("r1", p.r1_cmh2o_s_per_ml, "cmH2O*s/ml", NumberRange::at_least(0).at_most(20),
            "urethral linear resistance R1");
   t.number("r2", p.r2_cmh2o_s2_per_ml2, "cmH2O*s2/ml2", NumberRange::at_least(0).at_most(5),
            "urethral quadratic resistance R2");
-  t.number("detrusor_kpa", p.detrusor_kpa, "kPa", NumberRange::at_least(0).at_most(1000),
-           "peak active detrusor fiber stress");
+  t.choice<VoidingDrive>(
+      "drive", p.drive,
+      {{"detrusor", VoidingDrive::Detrusor}, {"straining", VoidingDrive::Straining}},
+      "what voids the bladder: the detrusor's contraction or abdominal straining");
   t.number("straining_kpa", p.straining_kpa, "kPa", NumberRange::at_least(0).at_most(20),
-           "abdominal straining pressure while voiding");
-  t.number("activation_ramp_s", p.activation_ramp_s, "s", NumberRange::at_least(0).at_most(60),
-           "ramp time of detrusor activation and straining");
+           "abdominal straining pressure at full activation (drive straining)");
+  t.number("activation_onset_s", p.activation_onset_s, "s", NumberRange::at_least(0).at_most(60),
+           "time constant of the drive's activation (0: at once)");
+  t.number("activation_plateau_s", p.activation_plateau_s, "s",
+           NumberRange::at_least(0).at_most(3600),
+           "how long the drive stays activated from the start of voiding");
+  t.number("activation_fade_s", p.activation_fade_s, "s", NumberRange::at_least(0).at_most(60),
+           "time constant of the drive's relaxation after the plateau (0: at once)");
   t.number("stop_flow_ml_s", p.stop_flow_ml_s, "ml/s", NumberRange::greater_than(0).at_most(50),
            "voiding ends when the flow falls below this");
   t.number("max_void_s", p.max_void_s, "s", NumberRange::greater_than(0).at_most(3600),
@@ -124,9 +161,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
   t.flag("dynamic", r.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
   t.number("bossak_alpha", r.bossak_alpha, "-", NumberRange::at_least(-1.0 / 3.0).at_most(0),
            "Bossak alpha (0: no numerical damping)");
-  t.integer("level", r.level, "-", NumberRange::at_least(1).at_most(2),
-            "1: urine as a hydrostatic volume (seconds); 2: Navier-Stokes urine on the "
-            "tetrahedra of vesica-mesh --fluid (velocity, wall shear; minutes)");
+  t.integer("level", r.level, "-", NumberRange::at_least(0).at_most(2),
+            "0: lumped sphere-equivalent bladder (milliseconds); 1: urine as a hydrostatic "
+            "volume (seconds); 2: Navier-Stokes urine on the tetrahedra of vesica-mesh "
+            "--fluid (velocity, wall shear; minutes)");
   t.number("fluid_dt_s", r.level2.fill_dt_s, "s",
            NumberRange::greater_than(0).at_most(10).or_value(
                0, "adaptive: growing after easy steps up to max_fill_step_ml"),

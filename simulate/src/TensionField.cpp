@@ -149,7 +149,7 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   // a cystometry's CPU time.
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> stretches;
   stretches.computeDirect(C2);
-  const bool isotropic_elastic = material.isotropic_elastic() && point.active_stress_pa == 0.0;
+  const bool isotropic_elastic = material.isotropic_elastic();
   if (isotropic_elastic && stretches.eigenvalues()(1) < kSurelyShortened) {
     // Shortened in every direction, an isotropic elastic wall is slack (see below) whatever
     // the plane-stress solve would say, so that solve is skipped (a slack element carries

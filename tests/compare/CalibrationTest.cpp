@@ -93,9 +93,10 @@ TEST(Calibration, ShearModulusOnTheRealBladderFitsTheFillingCurve) {
   EXPECT_NEAR((*f)["line_baseline_rmse"].get<double>(), 0.7414, 1e-4);
   // a one-parameter neo-Hookean wall does not beat the straight line, and says so
   EXPECT_EQ(c["fitted"].get<bool>(), rmse < 0.7414);
-  if (!c["fitted"].get<bool>())
+  if (!c["fitted"].get<bool>()) {
     EXPECT_NE(c["status"].get<std::string>().find("no better than a straight line"),
               std::string::npos);
+  }
 }
 
 TEST(Calibration, TheWholeRecordingFillingAndVoidingOnTheRealBladder) {
@@ -181,8 +182,10 @@ TEST(Calibration, VoidingParametersWithoutAVoidingInTheRecordingAreRefused) {
 }
 
 // Acceptance of issue 24 on the README's 2,474-triangle CT wall, for the detrusor-voided
-// model (simulate's muscle and urethra laws); enable it when they are the default, with
-// the parameters they name. Targets: filling RMSE <= 1 cmH2O and below the straight line;
+// model (simulate's muscle and urethra laws, now the default; the surrogate is simulate's
+// level 0). Still disabled for its cost: up to 40 refining runs of the whole cystometry on
+// the CT wall, each tens of seconds, a quarter of an hour and more of CPU; run it with
+// --gtest_also_run_disabled_tests. Targets: filling RMSE <= 1 cmH2O and below the straight line;
 // Qmax within 10 % of 17 ml/s; flow time within 20 % of the measured 39 s; voided volume
 // within 5 % of 350 ml; PdetQmax within 3 cmH2O of 5; Q(t) correlation >= 0.9 after
 // aligning the onsets.

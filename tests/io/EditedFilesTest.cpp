@@ -179,7 +179,11 @@ TEST(EditedFiles, MshEditedInGmshIsWhatTheSimulationReads) {
     EXPECT_NEAR(edited.fibers[t][0].norm(), 1.0, 1e-12);
   }
 
-  const std::string protocol = " --capacity-ml 120 --no-void --no-series --json";
+  // The wall of this test's making (the default bladder's 20 ml reference makes the two
+  // shapes' pressures closer than the 1 % asked below).
+  const std::string protocol =
+      " --material neo-hookean --mu-kpa 5 --residual-ml 50 --capacity-ml 120 --no-void"
+      " --no-series --json";
   r = run_command(tool("vesica-simulate") + " " + (dir / "b.msh").string() + " -o " +
                   (dir / "sim").string() + protocol);
   ASSERT_EQ(r.exit_code, 0) << r.output;

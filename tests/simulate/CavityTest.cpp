@@ -67,6 +67,8 @@ TEST(Cavity, StiffSphereDrainsExponentiallyWithMassBalance) {
   p.capacity_ml = p.start_ml + dV_ml;
   p.fill_rate_ml_min = 60.0 * dV_ml / 0.01;  // fills within 0.01 s
   p.p_open_cmh2o = 0.0;
+  p.p_close_cmh2o = 0.0;
+  p.urethra_half_open_cmh2o = 0.0;  // rigid: Q = p / R1
   p.r1_cmh2o_s_per_ml = R1;
   p.r2_cmh2o_s2_per_ml2 = 0.0;
   p.gravity = false;
@@ -132,6 +134,7 @@ TEST(Cavity, SlackWallBelowItsReferenceTransmitsOnlyTheTissueDrag) {
   ProtocolSettings p;
   p.capacity_ml = 60.0;
   p.fill_rate_ml_min = 600.0;
+  p.drive = VoidingDrive::Straining;
   p.straining_kpa = 4.0;
   const CystometryResult r =
       run_cystometry(wall, {"neo-hookean", {{"mu", 3e3}, {"K_per_mu", 1e3}}}, p, RunOptions{});

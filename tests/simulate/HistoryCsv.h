@@ -14,10 +14,12 @@ struct HistoryCsvRow {
   double t, infused, volume, pves, pabd, pdet, flow, voided;  // s, ml, cmH2O, ml/s
 };
 
+// The rows after the header; the comment lines before it ("# ... voided by ...") skipped.
 inline std::vector<HistoryCsvRow> read_history(const std::filesystem::path& csv) {
   std::ifstream in(csv);
   std::string line;
-  std::getline(in, line);
+  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+  }
   EXPECT_EQ(line,
             "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml");
   std::vector<HistoryCsvRow> rows;

@@ -1,5 +1,6 @@
 // Every registered material: D = 2 dS/dC against central finite differences of S(C),
-// at a general (non-diagonal) C, with fibers in tension and active stress.
+// at a general (non-diagonal) C, with fibers in tension and the detrusor's active stress
+// (isometric, shortening and lengthening: both branches of the Hill relation).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,21 +38,36 @@ Voigt6 finite_difference_tangent(const Material& m, const Eigen::Matrix3d& C,
   return D_fd;
 }
 
-void expect_consistent_tangent(const MaterialSpec& spec, double active_pa = 0.0) {
+// The muscle's history (its last four doubles, DetrusorMuscle.h): each fiber's committed
+// stretch is `rate_factor` times its stretch at C (> 1: the fiber shortens over the step)
+// and its committed Hill factor 0.8.
+void set_muscle_history(const Eigen::Matrix3d& C, const MaterialPoint& point, double rate_factor,
+                        std::vector<double>& h) {
+  for (int f = 0; f < 2; ++f) {
+    const Eigen::Vector3d& a = point.fibers[f];
+    h[h.size() - 4 + 2 * f] = rate_factor * std::sqrt(a.dot(C * a)) - 1.0;
+    h[h.size() - 3 + 2 * f] = 0.8 - 1.0;
+  }
+}
+
+void expect_consistent_tangent(const MaterialSpec& spec, double activation = 0.0,
+                               double muscle_rate_factor = 0.0, double dt_s = 0.5) {
   const auto material = make_material(spec);
   MaterialPoint point;
   point.fibers = {Eigen::Vector3d(0.8, 0.6, 0.0), Eigen::Vector3d(-0.6, 0.8, 0.0)};
-  point.dt_s = 0.5;
-  point.active_stress_pa = active_pa;
+  point.dt_s = dt_s;
+  point.activation = activation;
   std::vector<double> h_old(material->history_size());
   for (std::size_t i = 0; i < h_old.size(); ++i) h_old[i] = 100.0 * std::sin(double(i));
-  std::vector<double> h_new(h_old.size());
   const Eigen::Matrix3d C = general_C();
+  if (muscle_rate_factor > 0.0) set_muscle_history(C, point, muscle_rate_factor, h_old);
+  std::vector<double> h_new(h_old.size());
   Eigen::Matrix3d S;
   Voigt6 D;
   material->evaluate(C, point, h_old.data(), h_new.data(), S, D);
   const Voigt6 D_fd = finite_difference_tangent(*material, C, point, h_old);
   EXPECT_LT((D - D_fd).norm() / D.norm(), 1e-6) << spec.name << "\nD=\n" << D << "\nFD=\n" << D_fd;
+  EXPECT_LT((D - D.transpose()).norm(), 1e-12 * D.norm()) << spec.name << ": not symmetric";
 }
 
 }  // namespace
@@ -83,8 +99,24 @@ TEST(MaterialTangent, FibersViscoelasticInTension) {
        {{"mu", 5e3}, {"K", 1e4}, {"k1", 1e4}, {"k2", 1.0}, {"beta", 0.15}, {"tau", 1.0}}});
 }
 
-TEST(MaterialTangent, ActiveFiberStress) {
-  expect_consistent_tangent({"fibers", {{"mu", 5e3}, {"K", 1e4}, {"k1", 1e4}, {"k2", 1.0}}}, 2e4);
+TEST(MaterialTangent, ContractingDetrusorIsometricShorteningAndLengthening) {
+  const MaterialSpec muscle{"fibers",
+                            {{"mu", 5e3},
+                             {"K", 1e4},
+                             {"k1", 1e4},
+                             {"k2", 1.0},
+                             {"tone", 2e3},
+                             {"contractility", 1e5},
+                             {"optimal_stretch", 1.4},
+                             {"stretch_width", 0.6}}};
+  expect_consistent_tangent(muscle, 0.7, 1.0, 0.0);   // no time: the committed Hill factor
+  expect_consistent_tangent(muscle, 0.7, 1.05, 0.5);  // shortening: concentric Hill branch
+  expect_consistent_tangent(muscle, 0.7, 0.97, 0.5);  // lengthening: eccentric branch
+}
+
+TEST(MaterialTangent, DefaultBladderAndNeobladderWalls) {
+  expect_consistent_tangent({"bladder", {}}, 0.6, 1.02);
+  expect_consistent_tangent({"neobladder", {}}, 0.0, 0.0);
 }
 
 TEST(MaterialRegistry, RejectsUnknownNamesAndParameters) {
@@ -94,6 +126,7 @@ TEST(MaterialRegistry, RejectsUnknownNamesAndParameters) {
 }
 
 TEST(MaterialStress, ReferenceStateIsStressFree) {
+  // At rest (activation 0, no tone), every law: the detrusor's default tone is 0 too.
   for (const std::string& name : material_names()) {
     const auto m = make_material({name, {}});
     std::vector<double> h(m->history_size(), 0.0), hn(h.size());

@@ -1,9 +1,10 @@
 // Issue 7 acceptance on the real CT bladder of ../shared: the reference label becomes a
 // closed wall surface (vesica-surface, ~1,200 triangles, outlet at the bladder neck), and
 // vesica-simulate runs a full cystometry on it: 50 -> 350 ml at 50 ml/min, then voiding
-// by abdominal straining through the outlet law. Checked against bookkeeping truths that do
-// not come from the solver: V(t) = V0 + infused - voided at every row, the protocol's
-// volumes and rate, PVR = capacity - voided, and the ICS indices from their definitions.
+// by abdominal straining (--drive straining: a neobladder's way, or a detrusor that cannot)
+// through the urethra law, labelled so in the summary and history.csv. Checked against bookkeeping
+// truths that do not come from the solver: V(t) = V0 + infused - voided at every row, the
+// protocol's volumes and rate, PVR = capacity - voided, and the ICS indices from their definitions.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -39,11 +40,11 @@ TEST(PatientCystometry, RealCtBladderFillsTo350MlAndVoids) {
                 out),
             0)
       << out;
-  ASSERT_EQ(
-      run((bin_dir() / "vesica-simulate").string() + " " + (dir / "bladder.vtp").string() + " -o " +
-              (dir / "sim").string() + " --mu-kpa 3 --straining-kpa 4 --no-series --json",
-          out),
-      0)
+  ASSERT_EQ(run((bin_dir() / "vesica-simulate").string() + " " + (dir / "bladder.vtp").string() +
+                    " -o " + (dir / "sim").string() +
+                    " --mu-kpa 3 --drive straining --straining-kpa 4 --no-series --json",
+                out),
+            0)
       << out;
   const auto summary = nlohmann::json::parse(std::ifstream(dir / "sim" / "summary.json"));
   const auto rows = read_history(dir / "sim" / "history.csv");
@@ -78,4 +79,10 @@ TEST(PatientCystometry, RealCtBladderFillsTo350MlAndVoids) {
   EXPECT_GT(qmax, 1.0);
   EXPECT_NEAR(summary["booi"].get<double>(), pdet_qmax - 2 * qmax, 1e-9);
   EXPECT_NEAR(summary["bci"].get<double>(), pdet_qmax + 5 * qmax, 1e-9);
+  // Straining voided it, and every output says so.
+  EXPECT_EQ(summary["voiding_drive"], "straining");
+  std::ifstream csv(dir / "sim" / "history.csv");
+  std::string first;
+  std::getline(csv, first);
+  EXPECT_EQ(first, "# vesica-simulate cystometry, voided by abdominal straining");
 }

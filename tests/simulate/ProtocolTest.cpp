@@ -5,16 +5,23 @@
 // protocol's phases, loads, bookkeeping and cut-backs are checked against them:
 //  - filling at 1 ml/s from 50 to 150 ml in 1 s steps: infused = Q t, Pdet = (V − V_ref)/C
 //    on every row, 10 cmH2O at capacity (C = 10 ml/cmH2O); a hold of 5 s changes nothing;
-//  - passive voiding through p_open = 0, R1 = 1 cmH2O·s/ml, R2 = 0: V − V_ref decays by
-//    1 / (1 + Δt/τ) per step of Δt = 0.1 s, τ = R1 C = 10 s (within Δt/2τ of e^(−t/τ)),
-//    until the flow (V − V_ref)/τ falls below 0.5 ml/s, i.e. V − V_ref below 5 ml;
-//  - Pabd, straining and detrusor activation reach the model at each step's end, the last
-//    two ramped in over 2 s from the start of voiding;
+//  - passive voiding through p_open = p_close = 0, R1 = 1 cmH2O·s/ml, R2 = 0, a rigid
+//    urethra: V − V_ref decays by 1 / (1 + Δt/τ) per step of Δt = 0.1 s, τ = R1 C = 10 s
+//    (within Δt/2τ of e^(−t/τ)), until the flow (V − V_ref)/τ falls below 0.5 ml/s, i.e.
+//    V − V_ref below 5 ml;
+//  - Pabd and the drive's activation reach the model at each step's end, the activation
+//    a(t) = 1 − e^(−t/τ_on) from the start of voiding, held for the plateau, then fading as
+//    e^(−(t − t_p)/τ_fade); straining adds a · straining_kpa to Pabd, the detrusor gets a;
+//  - the urethra opens only once Pves has reached p_open, passes flow below p_open while
+//    open, and the flow ends near p_close (hysteresis); a drive that cannot reach p_open
+//    ends voiding with a note and the drive "none";
 //  - steps longer than the model can take are halved (each step asks the fixed step, or
 //    what is left of the phase), and a run whose cut-backs are
 //    exhausted stops with the history so far and one line naming time and volume.
 // Mass balance V = V_start + infused − voided holds on every row.
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include <algorithm>
 #include <cmath>
@@ -128,8 +135,10 @@ ProtocolSettings lumped_protocol() {
   p.fill_rate_ml_min = 60.0;
   p.hold_s = 5.0;
   p.p_open_cmh2o = 0.0;
+  p.p_close_cmh2o = 0.0;
   p.r1_cmh2o_s_per_ml = 1.0;
   p.r2_cmh2o_s2_per_ml2 = 0.0;
+  p.urethra_half_open_cmh2o = 0.0;  // rigid: Q = (Pves − p_close) / R1
   p.stop_flow_ml_s = 0.5;
   return p;
 }
@@ -194,37 +203,123 @@ TEST(Protocol, ThirdCavityModelFillsHoldsAndVoidsAsItsAnalyticAnswer) {
   EXPECT_EQ(r.summary["triangles"].get<int>(), 8);
 }
 
-TEST(Protocol, StrainingAndDetrusorRampInFromTheStartOfVoiding) {
+// a(t) of ActivationCurve.h by hand, t from the start of voiding.
+double hand_activation(double t, double onset, double plateau, double fade) {
+  if (t <= 0.0) return 0.0;
+  if (t <= plateau) return 1.0 - std::exp(-t / onset);
+  return (1.0 - std::exp(-plateau / onset)) * std::exp(-(t - plateau) / fade);
+}
+
+TEST(Protocol, TheDriveIsActivatedWithOnsetPlateauAndFade) {
+  for (const VoidingDrive drive : {VoidingDrive::Straining, VoidingDrive::Detrusor}) {
+    ProtocolSettings p = lumped_protocol();
+    p.capacity_ml = 60.0;
+    p.hold_s = 0.0;
+    p.pabd_cmh2o = 5.0;
+    p.drive = drive;
+    p.straining_kpa = 0.5;
+    p.activation_onset_s = 0.5;
+    p.activation_plateau_s = 1.5;
+    p.activation_fade_s = 0.4;
+    p.max_void_s = 3.0;
+    p.stop_flow_ml_s = 1e-6;
+    LumpedBladder model{LumpedOptions{}};
+    const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+    ASSERT_TRUE(r.completed) << r.failure;
+    expect_mass_balance(r, 50.0);
+    const double t_void = 10.0;
+    const bool straining = drive == VoidingDrive::Straining;
+    auto a = [&](double t) { return hand_activation(t - t_void, 0.5, 1.5, 0.4); };
+    for (const HistoryRow& row : r.history) {
+      const double straining_cmh2o = straining ? 500.0 / kPaPerCmH2O * a(row.time_s) : 0.0;
+      EXPECT_NEAR(row.pabd_cmh2o, 5.0 + straining_cmh2o, 1e-9) << "t = " << row.time_s;
+      EXPECT_NEAR(row.pdet_cmh2o, row.pves_cmh2o - row.pabd_cmh2o, 1e-12);
+    }
+    // Each step is asked with the loads at its end.
+    for (const StepRequest& s : model.requests()) {
+      const double pabd = 5.0 * kPaPerCmH2O + (straining ? 500.0 * a(s.end_time_s) : 0.0);
+      EXPECT_NEAR(s.loads.pabd_pa, pabd, 1e-9) << s.end_time_s;
+      EXPECT_NEAR(s.loads.activation, straining ? 0.0 : a(s.end_time_s), 1e-12) << s.end_time_s;
+      EXPECT_EQ(s.urethra != nullptr, s.end_time_s > t_void + 1e-9) << s.end_time_s;
+    }
+    // Hand-worked points of the curve: 1 − e⁻¹ one onset in, 1 − e⁻³ at the plateau's end,
+    // that times e⁻¹ one fade later.
+    EXPECT_NEAR(a(t_void + 0.5), 1.0 - std::exp(-1.0), 1e-15);
+    EXPECT_NEAR(a(t_void + 1.9), (1.0 - std::exp(-3.0)) * std::exp(-1.0), 1e-15);
+    // Voiding lasts max_void_s (to the step that reaches it), and says which drive voided.
+    EXPECT_GT(r.history.back().time_s - t_void, 3.0 - 1e-9);
+    EXPECT_LT(r.history.back().time_s - t_void, 3.1 + 1e-9);
+    EXPECT_EQ(r.summary["voiding_drive"], straining ? "straining" : "detrusor");
+  }
+}
+
+// Straining raises Pves by a(t) · 10 cmH2O from 10 cmH2O at capacity (150 ml, C = 10
+// ml/cmH2O): the urethra, closed below p_open = 15 cmH2O, opens once Pves has reached it
+// (a ≥ ½, t ≥ τ_on ln 2), then passes Q = (Pves − p_close)/R1 with p_close = 5 cmH2O, below
+// p_open too, until the flow falls under 0.5 ml/s: Pves within 0.5 cmH2O above p_close.
+namespace {
+
+// The lumped protocol voided at once by a straining of 10 cmH2O at full activation.
+ProtocolSettings strained_by_10_cmh2o() {
   ProtocolSettings p = lumped_protocol();
-  p.capacity_ml = 60.0;
   p.hold_s = 0.0;
-  p.pabd_cmh2o = 5.0;
-  p.straining_kpa = 0.5;
-  p.detrusor_kpa = 30.0;
-  p.activation_ramp_s = 2.0;
-  p.max_void_s = 3.0;
-  p.stop_flow_ml_s = 1e-6;
+  p.drive = VoidingDrive::Straining;
+  p.straining_kpa = 10.0 * kPaPerCmH2O / 1000.0;
+  return p;
+}
+
+}  // namespace
+
+TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure) {
+  ProtocolSettings p = strained_by_10_cmh2o();
+  p.activation_onset_s = 2.0;
+  p.p_open_cmh2o = 15.0;
+  p.p_close_cmh2o = 5.0;
   LumpedBladder model{LumpedOptions{}};
   const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
   ASSERT_TRUE(r.completed) << r.failure;
   expect_mass_balance(r, 50.0);
-  const double t_void = 10.0;
-  auto ramp = [&](double t) { return std::clamp((t - t_void) / 2.0, 0.0, 1.0); };
-  for (const HistoryRow& row : r.history) {
-    const double straining_cmh2o = 500.0 / kPaPerCmH2O * ramp(row.time_s);
-    EXPECT_NEAR(row.pabd_cmh2o, 5.0 + straining_cmh2o, 1e-9) << "t = " << row.time_s;
-    EXPECT_NEAR(row.pdet_cmh2o, row.pves_cmh2o - row.pabd_cmh2o, 1e-12);
+  const double t_void = 100.0;
+  double t_open = -1.0;
+  bool flow_below_p_open = false;
+  for (std::size_t i = 1; i < r.history.size(); ++i) {
+    const HistoryRow& row = r.history[i];
+    if (row.flow_ml_s > 0.0 && t_open < 0.0) t_open = r.history[i - 1].time_s;
+    if (t_open < 0.0) {
+      EXPECT_EQ(row.flow_ml_s, 0.0) << "t = " << row.time_s;
+    }
+    if (row.flow_ml_s > 0.0 && row.pves_cmh2o < 15.0) flow_below_p_open = true;
   }
-  // Each step is asked with the loads at its end.
-  for (const StepRequest& s : model.requests()) {
-    const double a = ramp(s.end_time_s);
-    EXPECT_NEAR(s.loads.pabd_pa, 5.0 * kPaPerCmH2O + 500.0 * a, 1e-9) << s.end_time_s;
-    EXPECT_NEAR(s.loads.active_stress_pa, 30000.0 * a, 1e-9) << s.end_time_s;
-    EXPECT_EQ(s.urethra != nullptr, s.end_time_s > t_void + 1e-9) << s.end_time_s;
-  }
-  // Voiding lasts max_void_s (to the step that reaches it).
-  EXPECT_GT(r.history.back().time_s - t_void, 3.0 - 1e-9);
-  EXPECT_LT(r.history.back().time_s - t_void, 3.1 + 1e-9);
+  // It opened at the end of the first step whose Pves reached 15 cmH2O.
+  ASSERT_GT(t_open, t_void);
+  const double a_open = 1.0 - std::exp(-(t_open - t_void) / 2.0);
+  EXPECT_GE(10.0 + 10.0 * a_open, 15.0 - 1e-9);
+  EXPECT_LT(10.0 + 10.0 * (1.0 - std::exp(-(t_open - 0.1 - t_void) / 2.0)), 15.0);
+  EXPECT_TRUE(flow_below_p_open);
+  const HistoryRow& last = r.history.back();
+  EXPECT_LT(last.flow_ml_s, 0.5);
+  EXPECT_GT(last.pves_cmh2o, 5.0);
+  EXPECT_LT(last.pves_cmh2o, 5.5 + 1e-9);
+  EXPECT_EQ(r.summary["voiding_drive"], "straining");
+  EXPECT_NEAR(r.summary["outlet"]["p_close_cmh2o"].get<double>(), 5.0, 1e-12);
+}
+
+// A straining of 10 cmH2O never lifts Pves (10 cmH2O at capacity) to p_open = 50 cmH2O:
+// once fully activated and no longer rising, voiding ends with a note, nothing voided.
+TEST(Protocol, ADriveThatCannotOpenTheUrethraEndsVoidingWithANote) {
+  ProtocolSettings p = strained_by_10_cmh2o();
+  p.p_open_cmh2o = 50.0;
+  LumpedBladder model{LumpedOptions{}};
+  const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+  ASSERT_TRUE(r.completed) << r.failure;
+  EXPECT_EQ(r.summary["voiding_drive"], "none");
+  EXPECT_EQ(r.summary["voided_ml"].get<double>(), 0.0);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("no voiding: Pves peaked at"), std::string::npos) << r.notes[0];
+  const double peak = r.summary["pves_max_voiding_cmh2o"].get<double>();
+  EXPECT_GT(peak, 19.5);
+  EXPECT_LT(peak, 20.0);
+  EXPECT_LT(r.history.back().time_s - 100.0, 20.0);  // not the 120 s of max_void_s
 }
 
 TEST(Protocol, TooLongStepsAreHalvedUntilTheModelConverges) {

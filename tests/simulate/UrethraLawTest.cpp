@@ -1,11 +1,17 @@
-// The urethra law p − p_open = R1 Q + R2 Q² (docs/physics.md §5) against a table worked by
-// hand for p_open = 20 cmH2O, R1 = 0.2 cmH2O·s/ml, R2 = 0.05 cmH2O·s²/ml²: a pressure
-// p above p_open gives Q² + 4 Q − 20 (p − 20) = 0, so Q = −2 + √(4 + 20 (p − 20)) ml/s, and
-// dQ/dp = 1 / (R1 + 2 R2 Q) ml/s per cmH2O:
+// The urethra law (docs/physics.md §5) against tables worked by hand. The rigid urethra
+// opening and closing at 20 cmH2O, p − 20 = R1 Q + R2 Q² with R1 = 0.2 cmH2O·s/ml,
+// R2 = 0.05 cmH2O·s²/ml²: a pressure p above it gives Q² + 4 Q − 20 (p − 20) = 0, so
+// Q = −2 + √(4 + 20 (p − 20)) ml/s, and dQ/dp = 1 / (R1 + 2 R2 Q) ml/s per cmH2O:
 //   p = 20.25 → Q = −2 + √9   = 1 ml/s,               dQ/dp = 1 / 0.3       = 3.33333…
 //   p = 30    → Q = −2 + √204 = 12.2828568570857 ml/s, dQ/dp = 1 / 1.42828… = 0.700140…
 //   p = 40    → Q = −2 + √404 = 18.0997512422418 ml/s, dQ/dp = 1 / 2.00997… = 0.497519…
-// and no flow at or below p_open. The law works in SI; the table is in clinical units.
+// and no flow at or below p_open. The collapsible urethra closing at p_close = 10 cmH2O,
+// half open p_half = 5 cmH2O above it, R1 = 0.2, R2 = 0.02: at Δp = p − p_close the open
+// lumen passes q with 0.02 q² + 0.2 q = Δp, q = (−0.2 + √(0.04 + 0.08 Δp)) / 0.04, the
+// lumen's open fraction is φ = (Δp + 0.05·5)/(Δp + 5), and Q = φ q:
+//   Δp = 1  → q = 3.66025403784439, φ = 0.208333…, Q = 0.762552924550914 ml/s
+//   Δp = 10 → q = 17.9128784747792, φ = 0.683333…, Q = 12.2404669577658 ml/s
+// The law works in SI; the tables are in clinical units.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,7 +37,7 @@ double ml_s_per_cmh2o(double si) {
 }
 
 const UrethraLaw& clinical_law() {
-  static const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 0.2, 0.05);
+  static const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 20.0, 0.2, 0.05);
   return law;
 }
 
@@ -67,25 +73,78 @@ TEST(UrethraLaw, PressureFormInvertsTheFlowForm) {
   EXPECT_NEAR(law.pressure_drop_derivative(1.0 * kM3PerMl) * kM3PerMl / kPaPerCmH2O, 0.3, 1e-12);
   for (double p_cmh2o : {20.25, 30.0, 40.0}) {
     const double q = law.flow(pa(p_cmh2o));
-    EXPECT_NEAR(law.opening_pressure() + law.pressure_drop(q), pa(p_cmh2o), 1e-9) << p_cmh2o;
+    EXPECT_NEAR(law.closing_pressure() + law.pressure_drop(q), pa(p_cmh2o), 1e-9) << p_cmh2o;
   }
 }
 
 // Without the quadratic term the law is Ohm's: Q = (p − p_open) / R1 = 10 / 0.5 = 20 ml/s.
 TEST(UrethraLaw, LinearLawIsOhmic) {
-  const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 0.5, 0.0);
+  const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 20.0, 0.5, 0.0);
   EXPECT_NEAR(ml_s(law.flow(pa(30.0))), 20.0, 1e-12);
   EXPECT_NEAR(ml_s_per_cmh2o(law.flow_derivative(pa(30.0))), 2.0, 1e-12);
 }
 
 // A resistance of zero is raised to 1e-6 cmH2O·s/ml, where dQ/dp stays finite at p_open.
 TEST(UrethraLaw, ZeroLinearResistanceKeepsAFiniteSlope) {
-  const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 0.0, 0.05);
+  const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 20.0, 0.0, 0.05);
   EXPECT_NEAR(law.r1() * kM3PerMl / kPaPerCmH2O, 1e-6, 1e-18);
   EXPECT_TRUE(std::isfinite(law.flow_derivative(pa(20.0) + 1e-9)));
 }
 
-TEST(UrethraLaw, NonPositiveResistanceIsRefused) {
+TEST(UrethraLaw, NonPositiveResistanceAndClosingAboveOpeningAreRefused) {
   EXPECT_THROW(UrethraLaw(0.0, 0.0, 1.0), std::invalid_argument);
   EXPECT_THROW(UrethraLaw(0.0, 1.0, -1.0), std::invalid_argument);
+  EXPECT_THROW(UrethraLaw(10.0, 20.0, 1.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(UrethraLaw(20.0, 10.0, 1.0, 0.0, -1.0), std::invalid_argument);
+}
+
+namespace {
+
+const UrethraLaw& collapsible_law() {
+  static const UrethraLaw law = UrethraLaw::from_clinical_units(20.0, 10.0, 0.2, 0.02, 5.0);
+  return law;
+}
+
+}  // namespace
+
+// A collapsible urethra opens at 20 cmH2O and passes flow down to its closing pressure,
+// 10 cmH2O: the table above, and nothing at or below p_close.
+TEST(UrethraLaw, CollapsibleUrethraFlowsBetweenClosingAndOpeningAsWorkedByHand) {
+  const UrethraLaw& law = collapsible_law();
+  EXPECT_NEAR(law.opening_pressure(), pa(20.0), 1e-12);
+  EXPECT_NEAR(law.closing_pressure(), pa(10.0), 1e-12);
+  EXPECT_NEAR(ml_s(law.flow(pa(11.0))), 0.762552924550914, 1e-12);
+  EXPECT_NEAR(ml_s(law.flow(pa(20.0))), 12.2404669577658, 1e-11);
+  EXPECT_EQ(law.flow(pa(10.0)), 0.0);
+  EXPECT_EQ(law.flow(pa(5.0)), 0.0);
+  // dQ/dp against central differences, and its limit φ0/R1 = 0.25 ml/s per cmH2O as the
+  // lumen closes.
+  for (double p_cmh2o : {10.5, 11.0, 20.0, 35.0}) {
+    const double h = 1e-4 * kPaPerCmH2O;
+    const double fd = (law.flow(pa(p_cmh2o) + h) - law.flow(pa(p_cmh2o) - h)) / (2.0 * h);
+    EXPECT_NEAR(law.flow_derivative(pa(p_cmh2o)), fd, 1e-6 * std::abs(fd)) << p_cmh2o;
+  }
+  EXPECT_NEAR(ml_s_per_cmh2o(law.flow_derivative(pa(10.0) + 1e-9)), 0.05 / 0.2, 1e-6);
+  // A collapsed lumen passes less than the rigid one at every pressure.
+  const UrethraLaw rigid = UrethraLaw::from_clinical_units(20.0, 10.0, 0.2, 0.02);
+  for (double p_cmh2o : {11.0, 20.0, 60.0})
+    EXPECT_LT(law.flow(pa(p_cmh2o)), rigid.flow(pa(p_cmh2o))) << p_cmh2o;
+}
+
+// Level 2's pressure form inverts the collapsible law too, odd in Q, with the slope
+// 1/(dQ/dp) and R1/φ0 = 4 cmH2O per ml/s at Q = 0.
+TEST(UrethraLaw, CollapsibleUrethraPressureFormInvertsItsFlowForm) {
+  const UrethraLaw& law = collapsible_law();
+  EXPECT_NEAR(law.pressure_drop(12.2404669577658 * kM3PerMl) / kPaPerCmH2O, 10.0, 1e-9);
+  EXPECT_NEAR(law.pressure_drop(-0.762552924550914 * kM3PerMl) / kPaPerCmH2O, -1.0, 1e-9);
+  for (double p_cmh2o : {10.2, 12.0, 30.0}) {
+    const double q = law.flow(pa(p_cmh2o));
+    EXPECT_NEAR(law.closing_pressure() + law.pressure_drop(q), pa(p_cmh2o), 1e-9) << p_cmh2o;
+    EXPECT_NEAR(law.pressure_drop_derivative(q) * law.flow_derivative(pa(p_cmh2o)), 1.0, 1e-9);
+  }
+  EXPECT_NEAR(law.pressure_drop_derivative(0.0) * kM3PerMl / kPaPerCmH2O, 4.0, 1e-9);
+  // Both pressures move with the datum.
+  const UrethraLaw shifted = law.shifted(pa(3.0));
+  EXPECT_NEAR(shifted.opening_pressure(), pa(23.0), 1e-9);
+  EXPECT_NEAR(shifted.flow(pa(23.0)), law.flow(pa(20.0)), 1e-15);
 }

@@ -27,7 +27,7 @@ struct PressureFace {
 // The open urethra outlet (docs/physics.md §5): traction −p n on the outlet faces with
 // p = p_out + ρ g·(x − x_ref) (p_out at the patch centroid x_ref, hydrostatic over the
 // patch), p_out one extra unknown (the last dof of the state) tied to the outflow
-// Q = ∫ u·n dA by the law in pressure form, p_out − p_open = R1 Q + R2 Q|Q|
+// Q = ∫ u·n dA by the law in pressure form, p_out − p_close = R1 Q + R2 Q|Q| (rigid)
 // (UrethraLaw::pressure_drop). While the urethra is closed (filling, or p below p_open)
 // the caller treats the outlet faces as wall instead.
 struct UrethraOutlet {

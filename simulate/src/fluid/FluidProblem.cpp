@@ -71,7 +71,7 @@ Eigen::VectorXd FluidProblem::initial_state() const {
       area += a;
     }
     x_ref /= area;
-    p_ref = boundary_.outlets[0].law.opening_pressure();
+    p_ref = boundary_.outlets[0].law.closing_pressure();
     state[node_dof_count()] = p_ref;
   } else if (boundary_.pinned_pressure_node >= 0) {
     x_ref = mesh_.nodes[boundary_.pinned_pressure_node];
@@ -188,10 +188,10 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Ei
                               Eigen::VectorXd& residual,
                               std::vector<Eigen::Triplet<double>>* triplets) const {
   // Bordered system: the traction −p_out n puts p_out A n / 3 in each corner's momentum
-  // row; the last row is the law in pressure form, p_out − p_open − R1 Q − R2 Q|Q| (Pa,
-  // UrethraLaw::pressure_drop),
+  // row; the last row is the law in pressure form, p_out − p_close − R1 Q − R2 Q|Q| (Pa,
+  // UrethraLaw::pressure_drop; for a collapsible urethra the inverse of its Q(p)),
   // with Q = Σ_faces Σ_corners u·(A n)/3. Smooth in Q (unlike q(p), which has a kink at
-  // p_open), so Newton converges from a closed start.
+  // p_close), so Newton converges from a closed start.
   const UrethraOutlet& outlet = boundary_.outlets[0];
   const int last = node_dof_count();
   const double p_out = state[last];
@@ -210,7 +210,7 @@ void FluidProblem::add_outlet(const Eigen::VectorXd& state, const std::vector<Ei
   }
   centroid /= area;
   auto hydrostatic = [&](int v) { return fluid_.density * fluid_.gravity.dot(x[v] - centroid); };
-  residual[last] = p_out - outlet.law.opening_pressure() - outlet.law.pressure_drop(q);
+  residual[last] = p_out - outlet.law.closing_pressure() - outlet.law.pressure_drop(q);
   const double dlaw_dq = outlet.law.pressure_drop_derivative(q);
   for (size_t f = 0; f < outlet.faces.size(); ++f) {
     const Eigen::Vector3d& corner = corners[f];

@@ -573,9 +573,7 @@ FluidBoundary FluidWallCoupling::outlet_boundary() const {
   // patch is held, so its centroid never moves).
   const UrethraLaw& law = outlet_->law;
   boundary.outlets.push_back(
-      {outlet_->faces,
-       law.with_opening_pressure(law.opening_pressure() -
-                                 hydrostatic_part().at(patch_centroid(outlet_->faces, x_)))});
+      {outlet_->faces, law.shifted(-hydrostatic_part().at(patch_centroid(outlet_->faces, x_)))});
   return boundary;
 }
 

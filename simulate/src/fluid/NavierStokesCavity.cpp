@@ -155,7 +155,7 @@ double NavierStokesCavity::pves() const {
 WallLoads NavierStokesCavity::step_loads(const StepRequest& step) const {
   WallLoads loads = surroundings(settings_, gravity_, x_ref_);
   loads.outside.p0 = step.loads.pabd_pa;
-  loads.active_stress_pa = step.loads.active_stress_pa;
+  loads.activation = step.loads.activation;
   loads.dt_s = step.dt_s;
   // The perivesical tissue's drag, as at level 1 (ProtocolSettings): volume-preserving
   // folds of the slack wall have no other stiffness than the urine's viscosity.

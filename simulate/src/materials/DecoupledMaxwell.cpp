@@ -2,7 +2,8 @@
 //   ξ_α = exp(-Δt / (2 τ_α)),  Q_α,n+1 = ξ_α² Q_α,n + β_α ξ_α (S∞_n+1 - S∞_n),
 //   S = S_vol + S∞ + Σ Q_α,   D = D_vol + (1 + Σ β_α ξ_α) D∞,
 // with S∞ = S_iso (matrix, and fibers when present). With no branch it is the elastic
-// decoupled material. The active stress is added on top and is not viscous.
+// decoupled material. The muscle's active stress (DetrusorMuscle.h) is added on top and is
+// not viscous; its own history follows the branches'.
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -13,12 +14,18 @@ namespace vesica::simulate {
 
 DecoupledMaxwell::DecoupledMaxwell(OgdenVolumetric volumetric,
                                    std::unique_ptr<IsochoricPart> isochoric,
-                                   std::vector<MaxwellBranch> branches)
-    : volumetric_(volumetric), isochoric_(std::move(isochoric)), branches_(std::move(branches)) {}
+                                   std::vector<MaxwellBranch> branches,
+                                   std::optional<DetrusorMuscle> muscle)
+    : volumetric_(volumetric),
+      isochoric_(std::move(isochoric)),
+      branches_(std::move(branches)),
+      muscle_(std::move(muscle)) {
+  // S∞ of the last committed state, then Q of each branch (6 Voigt components each).
+  muscle_offset_ = branches_.empty() ? 0 : 6 * (1 + branches_.size());
+}
 
 std::size_t DecoupledMaxwell::history_size() const {
-  // S∞ of the last committed state, then Q of each branch (6 Voigt components each).
-  return branches_.empty() ? 0 : 6 * (1 + branches_.size());
+  return muscle_offset_ + (muscle_ ? DetrusorMuscle::kHistorySize : 0);
 }
 
 void DecoupledMaxwell::evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point,
@@ -47,7 +54,8 @@ void DecoupledMaxwell::evaluate(const Eigen::Matrix3d& C, const MaterialPoint& p
     }
     D += factor * D_inf;
   }
-  add_active_fiber_stress(k, point, S, D);
+  if (muscle_)
+    muscle_->add_stress(C, point, history_old + muscle_offset_, history_new + muscle_offset_, S, D);
 }
 
 }  // namespace vesica::simulate

@@ -65,8 +65,12 @@ class NeoHookeanIsochoric : public IsochoricPart {
   double mu_;
 };
 
-// Neo-Hookean matrix plus two fiber families Ψ_f = k1/(2 k2)[exp(k2 (Ī4 - 1)²) - 1],
-// active only in tension (Ī4 > 1): S_f = 2 ψ' dĪ4/dC, D_f = 4 ψ'' dĪ4 ⊗ dĪ4 + 4 ψ' d²Ī4.
+// Neo-Hookean matrix plus two fiber families Ψ_f = k1/(2 k2)[exp(k2 (I4 - 1)²) - 1] on the
+// full invariant I4 = C : A, carrying load only in tension (I4 > 1): S_f = 2 ψ' A,
+// D_f = 4 ψ'' A ⊗ A. Not the isochoric Ī4: its projection −(Ī4/3) C⁻¹ loads the thickness
+// direction with a compression as large as the fiber stress, which the Ogden volumetric
+// term (bounded by K/β in dilation) cannot balance once the fibers stiffen, so plane
+// stress had no root (docs/physics.md §2.4).
 class FiberFamilies : public IsochoricPart {
  public:
   FiberFamilies(double mu, double k1, double k2) : matrix_(mu), k1_(k1), k2_(k2) {}
@@ -78,10 +82,5 @@ class FiberFamilies : public IsochoricPart {
   double k1_;
   double k2_;
 };
-
-// Active detrusor stress along both fiber families, S_a = T_a A / Ī4 (docs/physics.md §2),
-// with D_a = 2 dS_a/dC = -2 T_a A ⊗ dĪ4 / Ī4² (not symmetric; UMFPACK copes).
-void add_active_fiber_stress(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
-                             Voigt6& D);
 
 }  // namespace vesica::simulate

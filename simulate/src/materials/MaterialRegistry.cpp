@@ -1,8 +1,15 @@
-// The material registry: one line per material name. Parameters are SI (Pa, s):
-//   neo-hookean: mu, K (10 kPa) or K_per_mu (K = K_per_mu * mu, follows a fitted mu),
-//                beta_vol (9)
-//   maxwell:     neo-hookean + beta1..beta5, tau1..tau5 (or beta, tau for one branch)
-//   fibers:      maxwell + k1 (Pa), k2 (-); fibers are viscoelastic with the same branches
+// The material registry: one line per material name. Parameters are SI (Pa, s), and every
+// one has a default here, the only place (the executables pass a parameter only when it is
+// given). All laws are the decoupled family of DecoupledMaxwell.h:
+//   neo-hookean: mu, K or K_per_mu (default K = 1000 mu), beta_vol (9)
+//   maxwell:     neo-hookean + beta1..beta5, tau1..tau5 (or beta, tau for one branch);
+//                without any, the thesis's one branch beta 0.15, tau 1e-4 s
+//   fibers:      maxwell without default branches + k1 (Pa), k2 (-) on the full I4
+//   bladder:     the normal adult detrusor (docs/simulate.md, "Default walls"): fibers,
+//                one Maxwell branch, resting tone and contractility
+//   neobladder:  an ileal neobladder: a soft fiber wall without coordinated contraction
+// and every law takes the detrusor muscle's parameters (DetrusorMuscle.h): tone,
+// contractility (Pa), optimal_stretch, stretch_width, hill_a, hill_vmax (1/s).
 #include <algorithm>
 #include <string>
 
@@ -13,62 +20,126 @@
 namespace vesica::simulate {
 namespace {
 
+// A law's defaults: what a material name means before its parameters are given.
+struct LawDefaults {
+  double mu = 5e3;
+  bool fibers = false;
+  double k1 = 10e3, k2 = 1.0;
+  std::vector<MaxwellBranch> branches;  // replaced as a whole by given branches
+  MuscleParameters muscle;
+};
+
+// The normal adult detrusor (docs/simulate.md, "Default walls"): passive parameters fitted
+// to the shared normal recording on the real CT bladder, rate dependence and muscle from
+// the literature cited there.
+LawDefaults bladder_defaults() {
+  LawDefaults d;
+  d.mu = 1e3;
+  d.fibers = true;
+  d.k1 = 60.0;
+  d.k2 = 0.045;
+  d.branches = {{0.2, 10.0}};
+  d.muscle.contractility = 100e3;
+  d.muscle.optimal_stretch = 3.0;
+  d.muscle.stretch_width = 1.5;
+  d.muscle.hill_a = 0.3;
+  d.muscle.hill_vmax = 0.073;
+  return d;
+}
+
+// The ileal neobladder (docs/simulate.md, "Default walls"): the thesis's ileum matrix
+// (mu 1 kPa) with fibers that keep the pouch below its design pressure to 600 ml, the
+// thesis's rate dependence, and no coordinated contraction: it is voided by straining.
+LawDefaults neobladder_defaults() {
+  LawDefaults d;
+  d.mu = 1e3;
+  d.fibers = true;
+  d.k1 = 3.7e3;
+  d.k2 = 0.5;
+  d.branches = {{0.15, 1e-4}};
+  return d;
+}
+
 OgdenVolumetric volumetric_from(ParamReader& p, double mu) {
   const bool ratio = p.has("K_per_mu");
   if (ratio && p.has("K")) usage_error("material parameters K and K_per_mu exclude each other");
-  const double K = ratio ? p.positive("K_per_mu", 1e3) * mu : p.positive("K", 10e3);
+  // Nearly incompressible by default: the wall is mostly water (docs/physics.md §2.7).
+  const double K = p.has("K") ? p.positive("K", 0.0) : p.positive("K_per_mu", 1e3) * mu;
   return OgdenVolumetric(K, p.positive("beta_vol", 9.0));
 }
 
-std::vector<MaxwellBranch> branches_from(ParamReader& p) {
-  std::vector<MaxwellBranch> branches;
-  if (p.has("beta") || p.has("tau"))
-    branches.push_back({p.get("beta", 0.15), p.positive("tau", 1e-4)});
+std::vector<MaxwellBranch> branches_from(ParamReader& p, std::vector<MaxwellBranch> branches) {
+  bool given = false;
+  std::vector<MaxwellBranch> read;
+  if (p.has("beta") || p.has("tau")) {
+    read.push_back({p.get("beta", 0.15), p.positive("tau", 1e-4)});
+    given = true;
+  }
   for (int a = 1; a <= 5; ++a) {
     const std::string b = "beta" + std::to_string(a), t = "tau" + std::to_string(a);
-    if (p.has(b) || p.has(t)) branches.push_back({p.get(b, 0.0), p.positive(t, 1.0)});
+    if (p.has(b) || p.has(t)) {
+      read.push_back({p.get(b, 0.0), p.positive(t, 1.0)});
+      given = true;
+    }
   }
+  if (given) branches = read;
   for (const MaxwellBranch& br : branches)
     if (br.beta < 0.0) usage_error("material parameter beta must be >= 0");
   if (branches.size() > 5) usage_error("at most 5 Maxwell branches are supported");
   return branches;
 }
 
-std::unique_ptr<Material> make_neo_hookean(const MaterialSpec& spec) {
-  ParamReader p(spec);
-  const double mu = p.positive("mu", 5e3);
-  auto m = std::make_unique<DecoupledMaxwell>(volumetric_from(p, mu),
-                                              std::make_unique<NeoHookeanIsochoric>(mu),
-                                              std::vector<MaxwellBranch>{});
-  p.check_known_params();
-  return m;
+std::optional<DetrusorMuscle> muscle_from(ParamReader& p, MuscleParameters m) {
+  auto non_negative = [&p](const std::string& key, double fallback) {
+    const double v = p.get(key, fallback);
+    if (!(v >= 0.0)) usage_error("material parameter " + key + " must be >= 0");
+    return v;
+  };
+  m.tone = non_negative("tone", m.tone);
+  m.contractility = non_negative("contractility", m.contractility);
+  m.optimal_stretch = p.positive("optimal_stretch", m.optimal_stretch);
+  m.stretch_width = p.positive("stretch_width", m.stretch_width);
+  m.hill_a = p.positive("hill_a", m.hill_a);
+  m.hill_vmax = p.positive("hill_vmax", m.hill_vmax);
+  const DetrusorMuscle muscle(m);
+  if (!muscle.active()) return std::nullopt;
+  return muscle;
 }
 
-std::unique_ptr<Material> make_maxwell(const MaterialSpec& spec) {
+std::unique_ptr<Material> make_decoupled(const MaterialSpec& spec, const LawDefaults& d) {
   ParamReader p(spec);
-  const double mu = p.positive("mu", 5e3);
-  auto iso = std::make_unique<NeoHookeanIsochoric>(mu);
-  auto m =
-      std::make_unique<DecoupledMaxwell>(volumetric_from(p, mu), std::move(iso), branches_from(p));
+  const double mu = p.positive("mu", d.mu);
+  std::unique_ptr<IsochoricPart> iso;
+  if (d.fibers)
+    iso = std::make_unique<FiberFamilies>(mu, p.get("k1", d.k1), p.positive("k2", d.k2));
+  else
+    iso = std::make_unique<NeoHookeanIsochoric>(mu);
+  OgdenVolumetric volumetric = volumetric_from(p, mu);
+  std::vector<MaxwellBranch> branches = branches_from(p, d.branches);
+  std::optional<DetrusorMuscle> muscle = muscle_from(p, d.muscle);
   p.check_known_params();
-  return m;
-}
-
-std::unique_ptr<Material> make_fibers(const MaterialSpec& spec) {
-  ParamReader p(spec);
-  const double mu = p.positive("mu", 5e3);
-  auto iso = std::make_unique<FiberFamilies>(mu, p.get("k1", 10.0), p.positive("k2", 1.0));
-  auto m =
-      std::make_unique<DecoupledMaxwell>(volumetric_from(p, mu), std::move(iso), branches_from(p));
-  p.check_known_params();
-  return m;
+  return std::make_unique<DecoupledMaxwell>(volumetric, std::move(iso), std::move(branches),
+                                            std::move(muscle));
 }
 
 const std::map<std::string, MaterialFactory>& registry() {
   static const std::map<std::string, MaterialFactory> r = {
-      {"neo-hookean", make_neo_hookean},
-      {"maxwell", make_maxwell},
-      {"fibers", make_fibers},
+      {"neo-hookean", [](const MaterialSpec& s) { return make_decoupled(s, LawDefaults{}); }},
+      {"maxwell",
+       [](const MaterialSpec& s) {
+         LawDefaults d;
+         d.branches = {{0.15, 1e-4}};  // the thesis's fit (docs/physics.md §2.7)
+         return make_decoupled(s, d);
+       }},
+      {"fibers",
+       [](const MaterialSpec& s) {
+         LawDefaults d;
+         d.fibers = true;
+         return make_decoupled(s, d);
+       }},
+      {"bladder", [](const MaterialSpec& s) { return make_decoupled(s, bladder_defaults()); }},
+      {"neobladder",
+       [](const MaterialSpec& s) { return make_decoupled(s, neobladder_defaults()); }},
   };
   return r;
 }

@@ -1,10 +1,11 @@
 #pragma once
 // Simulated cystometry (docs/physics.md §4, §5, §7): filling at the infusion rate to
-// capacity, an optional hold, then voiding through the urethra law, recorded as a
-// history and summarized with the ICS numbers. One protocol runs over either cavity model:
-// level 1, the urine as an enclosed incompressible volume with a hydrostatic pressure
-// solved together with the wall (bordered Newton, volume control); level 2, the urine as a
-// Navier–Stokes flow on its tetrahedra, solved monolithically with the wall.
+// capacity, an optional hold, then voiding by the detrusor's contraction (or straining)
+// through the urethra law, recorded as a history and summarized with the ICS numbers. One
+// protocol runs over every cavity model: level 0, the lumped sphere-equivalent bladder
+// (§11); level 1, the urine as an enclosed incompressible volume with a hydrostatic
+// pressure solved together with the wall (bordered Newton, volume control); level 2, the
+// urine as a Navier–Stokes flow on its tetrahedra, solved monolithically with the wall.
 //
 // This is the stable in-process API used by vesica-simulate, the calibration in compare
 // and the studies:
@@ -19,10 +20,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/CystometrySettings.h"
 #include "vesica/simulate/Material.h"
 #include "vesica/simulate/WallLoading.h"
-#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {
@@ -57,5 +58,14 @@ void validate(const ProtocolSettings& settings, const RunOptions& options,
 CystometryResult run_cystometry(const WallModel& wall, const MaterialSpec& material,
                                 const ProtocolSettings& settings, const RunOptions& options,
                                 const fluid::FluidMesh* urine = nullptr);
+
+// What emptied the bladder, from the summary's voiding_drive: "voided by detrusor
+// contraction", "voided by abdominal straining" or "not voided".
+std::string history_label(const CystometryResult& result);
+
+// history.csv (io's text, HistoryCsv.h) after a '#' comment line "# vesica-simulate
+// cystometry, <history_label>" saying which drive voided (the readers skip comment lines),
+// written atomically.
+void write_labelled_history(const CystometryResult& result, const std::filesystem::path& csv);
 
 }  // namespace vesica::simulate

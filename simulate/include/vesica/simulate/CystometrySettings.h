@@ -12,6 +12,10 @@
 
 namespace vesica::simulate {
 
+// What empties the bladder (docs/physics.md §7.2): the detrusor's contraction (the
+// physiological void) or abdominal straining (a neobladder, or a detrusor that cannot).
+enum class VoidingDrive { Detrusor, Straining };
+
 struct ProtocolSettings {
   // Filling (docs/physics.md §7)
   double start_ml = 50.0;
@@ -19,15 +23,25 @@ struct ProtocolSettings {
   double fill_rate_ml_min = 50.0;
   double hold_s = 0.0;
   double pabd_cmh2o = 0.0;  // resting abdominal pressure on the outer wall
-  // Voiding (docs/physics.md §5): p_ves - p_open = R1 Q + R2 Q² for p_ves > p_open, else Q = 0
+  // Voiding (docs/physics.md §7.2): from the end of filling the drive is activated along
+  // a(t) = 1 − exp(−t/onset) for the plateau, then fades as exp(−(t − plateau)/fade);
+  // the detrusor's active stress is the wall material's (tone + a · contractility), the
+  // straining adds a · straining_kpa to Pabd.
   bool void_after_fill = true;
+  VoidingDrive drive = VoidingDrive::Detrusor;
+  double straining_kpa = 4.0;  // extra abdominal pressure at full straining
+  double activation_onset_s = 2.0;
+  double activation_plateau_s = 60.0;
+  double activation_fade_s = 5.0;
+  // The urethra (docs/physics.md §5): opens at p_open, passes Q with
+  // Pves − p_close = (R1 q + R2 q²), Q = φ q, φ the collapsible lumen's open fraction
+  // (half open urethra_half_open_cmh2o above p_close; 0 = rigid), and closes at p_close.
   double p_open_cmh2o = 20.0;
+  double p_close_cmh2o = 10.0;
   double r1_cmh2o_s_per_ml = 0.2;
-  double r2_cmh2o_s2_per_ml2 = 0.05;
-  double detrusor_kpa = 0.0;       // peak active fiber stress T_a
-  double straining_kpa = 0.0;      // extra abdominal pressure while voiding
-  double activation_ramp_s = 2.0;  // ramp of detrusor activation and straining
-  double stop_flow_ml_s = 1.0;     // voiding ends when the flow falls below this
+  double r2_cmh2o_s2_per_ml2 = 0.02;
+  double urethra_half_open_cmh2o = 5.0;
+  double stop_flow_ml_s = 1.0;  // voiding ends when the flow falls below this
   double max_void_s = 120.0;
   // Environment
   Posture posture = Posture::Supine;
@@ -73,8 +87,11 @@ struct Level2Options {
 };
 
 struct RunOptions {
-  // 1: the urine as an enclosed volume with a hydrostatic pressure (seconds); 2: the urine
-  // as a Navier–Stokes flow on its tetrahedra (minutes; needs them, see run_cystometry).
+  // 0: the lumped (0-D) bladder, a sphere of the wall's reference volume and mean
+  // thickness with the same material, activation and urethra (milliseconds; for fast
+  // calibration); 1: the urine as an enclosed volume with a hydrostatic pressure
+  // (seconds); 2: the urine as a Navier–Stokes flow on its tetrahedra (minutes; needs them,
+  // see run_cystometry).
   int level = 1;
   std::filesystem::path output_dir;  // empty: write no files (calibration)
   bool filling_only = false;         // stop at capacity (and hold)

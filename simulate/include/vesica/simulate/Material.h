@@ -6,6 +6,7 @@
 // (MaterialRegistry.h); there is no switch over material kinds anywhere.
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -15,15 +16,20 @@
 
 namespace vesica::simulate {
 
+// A time step longer than every relaxation: the material's equilibrium response.
+constexpr double kRelaxedStep = std::numeric_limits<double>::infinity();
+
 // What a material may need about its point besides C.
 struct MaterialPoint {
   // Unit fiber directions of the two families in the element's reference frame
   // (e1, e2, n0); in-plane, perpendicular.
   std::array<Eigen::Vector3d, 2> fibers{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
-  double dt_s = 0.0;  // time step of the current increment (viscoelastic update)
-  // Active fiber stress T_a(t) of the detrusor (Pa), set by the protocol's activation
-  // curve; zero for a passive wall.
-  double active_stress_pa = 0.0;
+  // Time step of the current increment (viscoelastic and Hill updates): 0 = the
+  // instantaneous response, kRelaxedStep = the relaxed one (a state held for long).
+  double dt_s = 0.0;
+  // Activation a(t) ∈ [0, 1] of the detrusor, from the protocol's activation curve: 0 at
+  // rest (the muscle's tone only), 1 in a full voiding contraction.
+  double activation = 0.0;
 };
 
 class Material {
@@ -33,10 +39,10 @@ class Material {
   // Number of history doubles a Gauss point stores (viscoelastic branches).
   virtual std::size_t history_size() const { return 0; }
 
-  // True for an isotropic law without history whose stress-free state is C = I: such a
-  // sheet pulled to a stretch ≤ 1 in every direction carries no tension, which lets the
-  // tension field (TensionField.h) recognize a slack element without solving for its
-  // wrinkles. The active stress of a point is checked separately.
+  // True for an isotropic law without history and without active stress whose stress-free
+  // state is C = I: such a sheet pulled to a stretch ≤ 1 in every direction carries no
+  // tension, which lets the tension field (TensionField.h) recognize a slack element
+  // without solving for its wrinkles.
   virtual bool isotropic_elastic() const { return false; }
 
   // C: right Cauchy-Green tensor (3x3, symmetric). history_old: committed state of the

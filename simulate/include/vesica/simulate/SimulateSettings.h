@@ -11,15 +11,27 @@
 
 namespace vesica::simulate {
 
+// A material parameter not given: the material's own default (MaterialRegistry.h).
+constexpr double kMaterialDefault = -1.0;
+
 struct SimulateSettings {
-  // Wall material (docs/physics.md §2), in kPa where the library takes Pa.
-  std::string material = "neo-hookean";
-  double mu_kpa = 5.0;
-  double k_kpa = 0.0;  // 0 = auto: K = 1000 mu, nearly incompressible
-  double k1_kpa = 10.0;
-  double k2 = 1.0;
-  std::vector<double> beta;   // Maxwell branch strengths (-)
+  // Wall material (docs/physics.md §2), in kPa where the library takes Pa; every
+  // parameter defaults to the named material's own value (kMaterialDefault).
+  std::string material = "bladder";
+  double mu_kpa = kMaterialDefault;
+  double k_kpa = kMaterialDefault;  // the material's: K = 1000 mu, nearly incompressible
+  double k1_kpa = kMaterialDefault;
+  double k2 = kMaterialDefault;
+  std::vector<double> beta;   // Maxwell branch strengths (-); none given: the material's
   std::vector<double> tau_s;  // their relaxation times (s), as many as beta
+  // The detrusor muscle (docs/physics.md §2.6): nominal active stress at rest and added at
+  // full activation (kPa), length–tension optimum and width, Hill's a/T0 and v_max (1/s).
+  double tone_kpa = kMaterialDefault;
+  double detrusor_kpa = kMaterialDefault;
+  double optimal_stretch = kMaterialDefault;
+  double stretch_width = kMaterialDefault;
+  double hill_a = kMaterialDefault;
+  double hill_vmax_per_s = kMaterialDefault;
   WallOptions wall;           // thickness, reference state, residual volume
   ProtocolSettings protocol;  // the cystometry and the surroundings
   // One posture for both: the wall's fixed patch (WallOptions) and gravity (ProtocolSettings).

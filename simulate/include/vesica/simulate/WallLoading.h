@@ -18,7 +18,7 @@ enum class ReferenceState { Scale, Prestress };
 struct WallOptions {
   double thickness_mm = 3.0;  // where the mesh gives no thickness_mm
   ReferenceState reference = ReferenceState::Scale;
-  double residual_ml = 50.0;           // Scale: stress-free volume (thesis: about 50 ml)
+  double residual_ml = 20.0;           // Scale: stress-free volume, below the start of filling
   double fixed_patch_radius_mm = 8.0;  // when the mesh has no outlet/inlet/fixed region
   Posture posture = Posture::Supine;   // decides "down" for the fallback fixed patch
 };
