@@ -1,6 +1,6 @@
 // The material registry: one line per material name. Parameters are SI (Pa, s):
 //   neo-hookean: mu, K (10 kPa) or K_per_mu (K = K_per_mu * mu, follows a fitted mu),
-//                beta_vol (9)
+//                beta_vol (9; 0 = K/2 (ln J)², FEBio's law)
 //   maxwell:     neo-hookean + beta1..beta5, tau1..tau5 (or beta, tau for one branch)
 //   fibers:      maxwell + k1 (Pa), k2 (-); fibers are viscoelastic with the same branches
 #include <algorithm>
@@ -17,7 +17,10 @@ OgdenVolumetric volumetric_from(ParamReader& p, double mu) {
   const bool ratio = p.has("K_per_mu");
   if (ratio && p.has("K")) usage_error("material parameters K and K_per_mu exclude each other");
   const double K = ratio ? p.positive("K_per_mu", 1e3) * mu : p.positive("K", 10e3);
-  return OgdenVolumetric(K, p.positive("beta_vol", 9.0));
+  // beta_vol = 0: K/2 (ln J)², FEBio's volumetric law (docs/physics.md §2.3).
+  const double beta = p.get("beta_vol", 9.0);
+  if (!(beta >= 0.0)) usage_error("material parameter beta_vol must be >= 0");
+  return OgdenVolumetric(K, beta);
 }
 
 std::vector<MaxwellBranch> branches_from(ParamReader& p) {
