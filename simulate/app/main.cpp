@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "VerificationStage.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/ParameterCli.h"
@@ -28,6 +29,7 @@ namespace {
 // The material as the library takes it (SI) from the table's clinical units.
 MaterialSpec material_spec(const SimulateSettings& c) {
   MaterialSpec spec{c.material, {{"mu", units::pa_from_kpa(c.mu_kpa)}}};
+  spec.params["beta_vol"] = c.beta_vol;
   if (c.k_kpa > 0.0)
     spec.params["K"] = units::pa_from_kpa(c.k_kpa);
   else
@@ -76,14 +78,20 @@ int main(int argc, char** argv) {
     options.output_dir = output;
     validate(p, options);  // before reading anything
     const MaterialSpec spec = material_spec(c);
-    make_material(spec);  // reject bad parameters before reading anything
+    make_material(spec);                    // reject bad parameters before reading anything
+    if (is_verification(c.verification)) {  // issue 25: P–λ of a closed wall
+      record.parameters() = table.values();
+      record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
+      return run_verification_stage(mesh, output, spec, c, record, common);
+    }
     WallModel wall;
     {
       PhaseTimer timer(record, "read");
       wall = load_wall(mesh, c.wall);
     }
     record.add_input(mesh);
-    Progress progress("simulate");  // silent with --json or off a terminal
+    export_febio_if_asked(c, wall, spec, record);  // issue 25
+    Progress progress("simulate");                 // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};

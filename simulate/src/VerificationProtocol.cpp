@@ -49,10 +49,6 @@ bool has_held_region(const WallModel& wall) {
 
 }  // namespace
 
-bool is_verification(const VerificationSettings& settings) {
-  return settings.protocol == "pressure-steps" || settings.protocol == "volume-steps";
-}
-
 void hold_rigid_body_modes(WallModel& wall) {
   wall.fixed.assign(wall.nodes.size(), {false, false, false});
   wall.support.assign(wall.nodes.size(), false);

@@ -153,3 +153,33 @@ TEST(VerificationProtocol, SmallBetaOgdenConverges) {
   EXPECT_TRUE(r.note.empty()) << r.note;
   expect_on_thin_sphere(r, K, beta);
 }
+
+// From the command line: the P–λ table with its units, one row per step after the
+// reference, and the summary naming the protocol.
+TEST(VerificationProtocol, CommandLineWritesThePressureStretchTable) {
+  using namespace vesica::test;
+  const std::filesystem::path dir = scratch_dir("verification-cli");
+  const std::string bin = bin_dir().string();
+  CommandResult r = run_command(bin + "/vesica-surface -o " + (dir / "sphere.vtp").string() +
+                                " --shape sphere --volume-ml 113 --edge-mm 8");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_command(bin + "/vesica-simulate " + (dir / "sphere.vtp").string() + " -o " +
+                  (dir / "out").string() +
+                  " --protocol volume-steps --steps 3 --max-stretch 1.1 --beta-vol 0 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("\"protocol\": \"volume-steps\""), std::string::npos) << r.output;
+  std::ifstream csv(dir / "out" / "pressure_stretch.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line,
+            "step,pressure_pa,pressure_cmh2o,volume_ml,stretch,newton_iterations,"
+            "foundation_iterations");
+  int rows = 0;
+  double stretch = 0.0;
+  while (std::getline(csv, line)) {
+    ++rows;
+    stretch = std::stod(line.substr(line.rfind(',', line.rfind(',', line.rfind(',') - 1) - 1) + 1));
+  }
+  EXPECT_EQ(rows, 4);
+  EXPECT_NEAR(stretch, 1.1, 1e-9);
+}

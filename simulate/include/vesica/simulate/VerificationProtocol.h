@@ -10,21 +10,10 @@
 #include <vector>
 
 #include "vesica/simulate/Material.h"
+#include "vesica/simulate/VerificationSettings.h"
 #include "vesica/simulate/WallModel.h"
 
 namespace vesica::simulate {
-
-struct VerificationSettings {
-  // "cystometry" (the clinical protocol, not a verification), "pressure-steps" or
-  // "volume-steps".
-  std::string protocol = "cystometry";
-  int steps = 20;                   // equal load steps to the last value
-  double max_pressure_cmh2o = 4.0;  // pressure-steps: the last pressure
-  double max_stretch = 1.5;         // volume-steps: the last λ = (V/V0)^(1/3)
-  int max_cutbacks = 8;             // halvings of the step after failures, in all
-};
-
-bool is_verification(const VerificationSettings& settings);
 
 struct StretchRow {
   double pressure_pa = 0.0;
