@@ -1,5 +1,6 @@
 // The volumetric laws of docs/physics.md §2.3: FEBio's K/2 (ln J)² (beta_vol = 0) and the
-// Ogden term at small β, whose stress must keep its digits (expm1 form).
+// Ogden term at small β, whose stress must keep its digits (expm1 form). Their tangents are
+// checked with every material's in MaterialTangentTest.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,14 +12,6 @@ using namespace vesica::simulate;
 
 namespace {
 
-// C of a general (sheared, dilated) deformation.
-Eigen::Matrix3d general_C(double dilation) {
-  Eigen::Matrix3d F;
-  F << 1.3, 0.2, 0.05, -0.1, 0.9, 0.15, 0.02, -0.07, 1.1;
-  F *= dilation;
-  return F.transpose() * F;
-}
-
 Eigen::Matrix3d stress(const Material& m, const Eigen::Matrix3d& C) {
   Eigen::Matrix3d S;
   Voigt6 D;
@@ -26,42 +19,7 @@ Eigen::Matrix3d stress(const Material& m, const Eigen::Matrix3d& C) {
   return S;
 }
 
-// D = 2 dS/dC against central differences of S.
-double tangent_error(const MaterialSpec& spec, const Eigen::Matrix3d& C) {
-  const auto m = make_material(spec);
-  Eigen::Matrix3d S;
-  Voigt6 D, D_fd;
-  m->evaluate(C, MaterialPoint{}, nullptr, nullptr, S, D);
-  for (int J = 0; J < 6; ++J) {
-    const int k = kVoigtIndex[J][0], l = kVoigtIndex[J][1];
-    const double h = 1e-6;
-    Eigen::Matrix3d dC = Eigen::Matrix3d::Zero();
-    dC(k, l) += h;
-    if (k != l) dC(l, k) += h;
-    D_fd.col(J) =
-        to_voigt(stress(*m, C + dC) - stress(*m, C - dC)) / (2.0 * h) * (k == l ? 2.0 : 1.0);
-  }
-  return (D - D_fd).norm() / D.norm();
-}
-
 }  // namespace
-
-TEST(VolumetricLaw, LogSquaredLawHasAConsistentTangent) {
-  for (double K : {1e4, 2.5e6})  // K/μ = 2 and 500
-    for (double dilation : {0.95, 1.0, 1.2})
-      EXPECT_LT(tangent_error({"neo-hookean", {{"mu", 5e3}, {"K", K}, {"beta_vol", 0.0}}},
-                              general_C(dilation)),
-                1e-6)
-          << "K " << K << " dilation " << dilation;
-}
-
-TEST(VolumetricLaw, SmallBetaOgdenHasAConsistentTangent) {
-  for (double beta : {1e-3, 1e-4})
-    EXPECT_LT(tangent_error({"neo-hookean", {{"mu", 5e3}, {"K", 1e4}, {"beta_vol", beta}}},
-                            general_C(1.1)),
-              1e-6)
-        << "beta " << beta;
-}
 
 // A pure dilation C = J^(2/3) I has no isochoric stress, so S = (J dΨ/dJ) C⁻¹ with
 // J dΨ/dJ = K ln J for (K/2)(ln J)² and (K/β)(1 - J^(-β)) for Ogden; the latter's series
