@@ -20,6 +20,8 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
   xvfb xauth chromium snakemake python3-meshio \
   python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest
+# zlib: core reads every gzip output back before it replaces anything
+DEBIAN_PACKAGES += zlib1g-dev
 
 # make package: dpkg-shlibdeps computes the Debian package's Depends.
 DEBIAN_PACKAGES += dpkg-dev

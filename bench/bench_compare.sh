@@ -1,16 +1,37 @@
 #!/usr/bin/env bash
-# Benchmark of vesica-compare: ICS parameters + model-vs-measured metrics + report for the
-# shared recording against a synthetic history (target < 1 s) and, when the calibration is
-# built, a one-parameter calibration of mu on a 2,312-triangle spherical wall
-# (bench_compare_calibration; target < 60 s) and, with a wall mesh in $VESICA_BENCH_WALL,
-# the same through vesica-compare on that mesh. Prints one JSON object.
+# Benchmark of vesica-compare, one JSON object:
+#  - ICS parameters + model-vs-measured metrics + report for the shared recording against a
+#    synthetic history (target < 1 s);
+#  - when the calibration is built: a one-parameter calibration of mu on a 2,312-triangle
+#    spherical wall against a simulated truth (bench_compare_calibration; target < 60 s);
+#  - with ../shared (or $VESICA_SHARED_DIR): the full calibration of the shared recording
+#    (filling and voiding, $VESICA_BENCH_CALIBRATE parameters, at most 6) on the
+#    2,474-triangle CT wall of the README (target < 60 s on 2 cores), every fitted
+#    parameter with its 95 % interval and whether the data identify it;
+#  - with a wall mesh in $VESICA_BENCH_WALL, the calibration of mu on that mesh.
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 here=$(cd "$(dirname "$0")/.." && pwd)
-exe="$build/bin/vesica-compare"
+bin="$build/bin"
+exe="$bin/vesica-compare"
 data="$here/tests/compare/data"
+shared="${VESICA_SHARED_DIR:-$here/../shared}"
+# The present model voids by straining; with the detrusor laws: mu,k1,k2,contractility,...
+calibrate="${VESICA_BENCH_CALIBRATE:-mu,p_open,r2,straining}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+# "WALL CPU": seconds taken by the command and the CPU seconds of its processes.
+timed() {
+  python3 - "$@" <<'PY'
+import resource, subprocess, sys, time
+t0 = time.monotonic()
+rc = subprocess.call(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+u = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(f"{time.monotonic() - t0:.2f} {u.ru_utime + u.ru_stime:.2f}")
+sys.exit(rc)
+PY
+}
 
 seconds() {  # seconds taken by the command
   local t0 t1
@@ -24,8 +45,37 @@ report_s=$(seconds "$exe" --measured "$data/normal-female-34y.csv" \
   --simulated "$data/synthetic-history.csv" -o "$work/report")
 cal_json=null
 sphere_json=null
+ct_json=null
 if [ -x "$build/bin/bench_compare_calibration" ]; then
   sphere_json=$("$build/bin/bench_compare_calibration" 2>/dev/null | tail -1) || sphere_json=null
+fi
+label="$shared/data/ct/abdomen-3mm/bladder-reference.nii.gz"
+if [ -f "$label" ] && [ -x "$bin/vesica-surface" ] && [ -x "$bin/vesica-mesh" ]; then
+  "$bin/vesica-surface" "$label" -o "$work/ct.vtp" --target-triangles 2300 --outlet auto \
+    --outlet-radius-mm 12 >/dev/null 2>&1
+  "$bin/vesica-mesh" "$work/ct.vtp" -o "$work/ct.msh" --thickness-mm 3 >/dev/null 2>&1
+  if ct_t=$(timed "$exe" --measured "$data/normal-female-34y.csv" --mesh "$work/ct.vtu" \
+      --calibrate "$calibrate" --straining-kpa 4 -o "$work/ct-cal"); then
+    ct_json=$(python3 - "$work/ct-cal/metrics.json" $ct_t <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1]))["calibration"]
+v = c.get("voiding") or {}
+print(json.dumps({
+    "triangles": 2474, "seconds": float(sys.argv[2]), "cpu_seconds": float(sys.argv[3]),
+    "target_seconds": 60,
+    "parameters": [{k: p[k] for k in ("name", "unit", "value", "ci95_low", "ci95_high",
+                                      "identifiable", "note")} for p in c["parameters"]],
+    "status": c["status"], "fitted": c["fitted"],
+    "simulations": c["simulations"], "failed_simulations": c["failed_simulations"],
+    "stages": [{k: s[k] for k in ("name", "model", "simulations", "seconds")} for s in c["stages"]],
+    "series_rmse": {s["name"]: {"rmse": s["rmse"], "line": s["line_baseline_rmse"],
+                                "constant": s["constant_baseline_rmse"]} for s in c["series"]},
+    "voiding": {k: v.get(k) for k in ("qmax_ml_s", "flow_time_s", "voided_ml", "pdet_qmax_cmh2o",
+                                      "flow_correlation_aligned_onsets")},
+}))
+PY
+)
+  fi
 fi
 if [ -n "${VESICA_BENCH_WALL:-}" ] && [ -f "$VESICA_BENCH_WALL" ]; then
   if cal_s=$(seconds "$exe" --measured "$data/normal-female-34y.csv" --mesh "$VESICA_BENCH_WALL" \
@@ -35,7 +85,7 @@ print(json.dumps({'seconds': $cal_s, 'fitted_mu_kpa': s.get('fitted_mu'), \
 'fit_rmse_cmh2o': s.get('fit_rmse_cmh2o')}))")
   fi
 fi
-python3 - "$work/report/metrics.json" "$report_s" "$cal_json" "$sphere_json" <<'PY'
+python3 - "$work/report/metrics.json" "$report_s" "$cal_json" "$sphere_json" "$ct_json" <<'PY'
 import json, sys
 m = json.load(open(sys.argv[1]))
 p = m["measured"]["parameters"]
@@ -49,5 +99,6 @@ print(json.dumps({
     "pdet_rmse_vs_synthetic_cmh2o": m["comparison"]["filling_pdet"]["rmse_cmh2o"],
     "calibration_mesh": json.loads(sys.argv[3]),
     "calibration_sphere_2312_triangles": json.loads(sys.argv[4]),
+    "calibration_whole_recording_ct_2474_triangles": json.loads(sys.argv[5]),
 }, indent=2))
 PY

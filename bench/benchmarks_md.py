@@ -148,6 +148,17 @@ def calibration(d):
                  f"RMSE {num(d.get('rmse_cmh2o'))} cmH2O"))
 
 
+def calibration_whole(d):
+    params = ", ".join(
+        f"{p['name']} {num(p['value'])} [{num(p['ci95_low'])}, {num(p['ci95_high'])}]"
+        + ("" if p.get("identifiable") else " (not identifiable)")
+        for p in d.get("parameters") or [])
+    return (f"{num(d.get('triangles'))} triangles, shared recording", d.get("seconds"),
+            d.get("target_seconds"),
+            join(f"CPU {seconds(d.get('cpu_seconds'))}",
+                 f"{d.get('simulations', '?')} simulations", params, d.get("status")))
+
+
 def calibration_mesh(d):
     return ("$VESICA_BENCH_WALL", d.get("seconds"), None,
             join(f"fitted μ {num(d.get('fitted_mu_kpa'), 4)} kPa",
@@ -185,6 +196,8 @@ CASES = [
     ("simulate_level2", "level2_real_bladder", "simulate --level 2: filling 50 → 100 ml, real CT bladder", level2, True),
     ("compare", None, "compare: ICS parameters, metrics and report", compare_report, True),
     ("compare", "calibration_sphere_2312_triangles", "compare: calibration of μ, sphere", calibration, True),
+    ("compare", "calibration_whole_recording_ct_2474_triangles",
+     "compare: calibration of the whole recording (filling + voiding), CT wall", calibration_whole, True),
     ("compare", "calibration_mesh", "compare: calibration of μ on a given wall", calibration_mesh, False),
     ("pipelines", None, "vesica run: no-op of a fresh 6-stage chain", pipelines_noop, True),
     ("pipelines", "demo", "vesica run: no-op of the finished demo", pipelines_demo, False),

@@ -33,6 +33,7 @@ vesica_find_dependency(spdlog)
 vesica_find_dependency(yaml-cpp)
 vesica_find_dependency(OpenSSL)  # SHA-256 content hashes for manifests
 vesica_find_dependency(Threads)
+vesica_find_dependency(ZLIB)  # checks gzip outputs whole (core/src/OutputCheck.cpp)
 vesica_find_dependency(OpenMP COMPONENTS CXX)  # thread counts of CHOLMOD and the BLAS
 find_package(CLI11 QUIET CONFIG)
 

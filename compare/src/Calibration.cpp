@@ -1,25 +1,84 @@
 #include "vesica/compare/Calibration.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <map>
 
-#include <Eigen/Dense>
-#include <unsupported/Eigen/NonLinearOptimization>
-
-#include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/PiecewiseLinear.h"
-#include "vesica/compare/RecordingAnalysis.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
+#include "vesica/core/Units.h"
+#include "vesica/simulate/SphereMesh.h"
 
 namespace vesica::compare {
 namespace {
 
-constexpr double kFailedResidual = 100.0;  // cmH2O, where a run gave no curve at all
+using Apply = std::function<void(double, simulate::MaterialSpec&, simulate::ProtocolSettings&)>;
+
+// A material parameter, stored in SI: value · factor.
+Apply material(const char* key, double factor) {
+  return [key, factor](double v, simulate::MaterialSpec& m, simulate::ProtocolSettings&) {
+    m.params[key] = v * factor;
+  };
+}
+
+// A protocol setting, in its own (clinical) unit.
+Apply protocol(double simulate::ProtocolSettings::*field) {
+  return
+      [field](double v, simulate::MaterialSpec&, simulate::ProtocolSettings& p) { p.*field = v; };
+}
+
+// A fitted bulk modulus no longer follows mu.
+void bulk_modulus(double kpa, simulate::MaterialSpec& m, simulate::ProtocolSettings&) {
+  m.params.erase("K_per_mu");
+  m.params["K"] = units::pa_from_kpa(kpa);
+}
+
+using simulate::ProtocolSettings;
+
+// One line a parameter: name, unit, start, lower, upper, voiding only, how it applies.
+const std::vector<ModelParameter>& all_parameters() {
+  static const std::vector<ModelParameter> all = {
+      {{"mu", "kPa", 5.0, 0.1, 100.0, false}, material("mu", 1e3)},
+      {{"k", "kPa", 10.0, 0.1, 1e4, false}, bulk_modulus},
+      {{"beta", "-", 0.15, 1e-3, 50.0, false}, material("beta", 1.0)},
+      {{"tau", "s", 1e-4, 1e-6, 1e3, false}, material("tau", 1.0)},
+      {{"k1", "Pa", 10.0, 1e-2, 1e5, false}, material("k1", 1.0)},
+      {{"k2", "-", 1.0, 1e-2, 100.0, false}, material("k2", 1.0)},
+      {{"p_open", "cmH2O", 20.0, 0.5, 150.0, true}, protocol(&ProtocolSettings::p_open_cmh2o)},
+      {{"r1", "cmH2O s/ml", 0.2, 1e-4, 20.0, true}, protocol(&ProtocolSettings::r1_cmh2o_s_per_ml)},
+      {{"r2", "cmH2O s2/ml2", 0.05, 1e-5, 5.0, true},
+       protocol(&ProtocolSettings::r2_cmh2o_s2_per_ml2)},
+      {{"detrusor", "kPa", 5.0, 0.1, 500.0, true}, protocol(&ProtocolSettings::detrusor_kpa)},
+      {{"straining", "kPa", 4.0, 0.1, 20.0, true}, protocol(&ProtocolSettings::straining_kpa)},
+      {{"activation_ramp", "s", 2.0, 0.05, 60.0, true},
+       protocol(&ProtocolSettings::activation_ramp_s)},
+  };
+  return all;
+}
+
+ModelRun run_once(const CystometryModel& m) {
+  const auto result = simulate::run_cystometry(m.wall, m.material, m.protocol, m.run);
+  ModelRun run;
+  run.recording = recording_from_history(result.history);
+  run.completed = result.completed;
+  run.failure = result.failure;
+  return run;
+}
 
 }  // namespace
+
+std::vector<std::string> model_parameter_names() {
+  std::vector<std::string> names;
+  for (const auto& p : all_parameters()) names.push_back(p.fit.name);
+  return names;
+}
+
+ModelParameter model_parameter(const std::string& name) {
+  std::string choices;
+  for (const auto& p : all_parameters()) {
+    if (p.fit.name == name) return p;
+    choices += (choices.empty() ? "" : ", ") + p.fit.name;
+  }
+  usage_error("--calibrate: unknown parameter \"" + name + "\"", "choose from " + choices);
+}
 
 Recording recording_from_history(const std::vector<simulate::HistoryRow>& h) {
   Recording r;
@@ -37,233 +96,73 @@ Recording recording_from_history(const std::vector<simulate::HistoryRow>& h) {
   return r;
 }
 
-namespace {
-
-void apply(const ParameterSpec& s, double v, simulate::MaterialSpec& m,
-           simulate::ProtocolSettings& p) {
-  if (s.name == "mu") m.params["mu"] = v * 1e3;
-  if (s.name == "k") {
-    m.params.erase("K_per_mu");  // a fitted K no longer follows mu
-    m.params["K"] = v * 1e3;
-  }
-  if (s.name == "beta") m.params["beta"] = v;
-  if (s.name == "tau") m.params["tau"] = v;
-  if (s.name == "k1") m.params["k1"] = v;
-  if (s.name == "k2") m.params["k2"] = v;
-  if (s.name == "r1") p.r1_cmh2o_s_per_ml = v;
-  if (s.name == "r2") p.r2_cmh2o_s2_per_ml2 = v;
-  if (s.name == "p_open") p.p_open_cmh2o = v;
-}
-
-// The residual function of the fit, in u = ln p, with a cache (LM evaluates the same
-// point for the value and the Jacobian) and a budget of simulations.
-class Residuals {
- public:
-  explicit Residuals(const CalibrationProblem& problem) : pb_(problem) {
-    grid_ = grid(pb_.volume_lo_ml, pb_.volume_hi_ml, pb_.volume_step_ml);
-    const PiecewiseLinear m(pb_.measured_filling.x, pb_.measured_filling.y);
-    for (double v : grid_) measured_.push_back(m(v));
-    if (uses_flow() && pb_.measured_flow.x.size() > 1) {
-      const PiecewiseLinear q(pb_.measured_flow.x, pb_.measured_flow.y);
-      for (double t : compare::grid(0, pb_.measured_flow.x.back(), 1.0)) {
-        flow_grid_.push_back(t);
-        measured_.push_back(q(t));
-      }
+ModelSimulator cystometry_simulator(const CystometryModel& base,
+                                    const std::vector<ModelParameter>& parameters,
+                                    double capacity_ml, bool voiding) {
+  CystometryModel m = base;
+  m.protocol.capacity_ml = capacity_ml;
+  m.protocol.void_after_fill = voiding;
+  m.run.filling_only = !voiding;
+  m.run.output_dir.clear();
+  m.run.on_progress = nullptr;
+  // Every iteration a fresh tangent: the fit's finite-difference Jacobian needs curves
+  // converged far below the Newton tolerance (quadratic convergence overshoots it), not
+  // the chord iterations' just-below-tolerance ones, whose noise narrows the intervals.
+  m.run.newton.reuse_tangent_ratio = 0.0;
+  return [m, parameters](const std::vector<double>& values) {
+    CystometryModel trial = m;
+    for (std::size_t j = 0; j < parameters.size(); ++j)
+      parameters[j].apply(values[j], trial.material, trial.protocol);
+    ModelRun run = run_once(trial);
+    if (run.completed) return run;
+    // Retried once with halved steps before it counts as a failed evaluation.
+    trial.run.max_fill_step_ml /= 2;
+    trial.run.max_void_step_s /= 2;
+    trial.run.max_void_step_ml /= 2;
+    ModelRun retry = run_once(trial);
+    if (!retry.completed) {
+      log()->debug("calibration run failed: {}", retry.failure);
+      retry.failure += " (also with halved steps)";
     }
-  }
-
-  bool uses_flow() const {
-    return std::any_of(pb_.parameters.begin(), pb_.parameters.end(),
-                       [](const ParameterSpec& s) { return s.outlet; });
-  }
-  int values() const { return static_cast<int>(measured_.size()); }
-  int inputs() const { return static_cast<int>(pb_.parameters.size()); }
-  int simulations() const { return simulations_; }
-  std::size_t filling_points() const { return grid_.size(); }
-
-  std::vector<double> parameters(const Eigen::VectorXd& u) const {
-    std::vector<double> p(u.size());
-    for (int j = 0; j < u.size(); ++j)
-      p[j] = std::clamp(std::exp(u[j]), pb_.parameters[j].lower, pb_.parameters[j].upper);
-    return p;
-  }
-
-  // Residual vector at u; also returns the simulated filling curve of that run.
-  Eigen::VectorXd operator()(const Eigen::VectorXd& u, Curve* filling = nullptr) {
-    const std::vector<double> p = parameters(u);
-    const auto hit = cache_.find(p);
-    if (hit != cache_.end() && !filling) return hit->second;
-    simulate::MaterialSpec material = pb_.material;
-    simulate::ProtocolSettings protocol = pb_.protocol;
-    for (std::size_t j = 0; j < p.size(); ++j) apply(pb_.parameters[j], p[j], material, protocol);
-    ++simulations_;
-    // Every iteration a fresh tangent: the fit's finite-difference Jacobian needs curves
-    // converged far below the Newton tolerance (quadratic convergence overshoots it), not
-    // the chord iterations' just-below-tolerance ones, whose noise narrowed the confidence
-    // interval past the truth.
-    simulate::RunOptions run = pb_.run;
-    run.newton.reuse_tangent_ratio = 0.0;
-    const auto result = simulate::run_cystometry(pb_.wall, material, protocol, run);
-    Eigen::VectorXd r = Eigen::VectorXd::Constant(values(), kFailedResidual);
-    if (result.history.size() >= 2) {
-      const auto a = analyse(recording_from_history(result.history));
-      if (filling) *filling = a.filling;
-      fill_residuals(a, r);
-    }
-    if (!result.completed) log()->warn("calibration run: {}", result.failure);
-    cache_[p] = r;
-    return r;
-  }
-
-  // Forward differences in u with a 1 % relative step of p (the simulation's Newton
-  // tolerance makes smaller steps noisy).
-  Eigen::MatrixXd jacobian(const Eigen::VectorXd& u) {
-    const Eigen::VectorXd f0 = (*this)(u);
-    Eigen::MatrixXd J(values(), inputs());
-    for (int j = 0; j < inputs(); ++j) {
-      Eigen::VectorXd up = u;
-      double h = 1e-2;
-      // step inwards at an upper bound, so that clamping does not zero the column
-      if (std::exp(u[j] + h) > pb_.parameters[j].upper) h = -h;
-      up[j] += h;
-      J.col(j) = ((*this)(up)-f0) / h;
-    }
-    return J;
-  }
-
- private:
-  void fill_residuals(const RecordingAnalysis& a, Eigen::VectorXd& r) const {
-    if (a.filling.x.size() >= 2) {
-      const PiecewiseLinear s(a.filling.x, a.filling.y);
-      for (std::size_t i = 0; i < grid_.size(); ++i) {
-        const double e = s(grid_[i]) - measured_[i];
-        r[i] = std::isfinite(e) ? e : kFailedResidual;
-      }
-    }
-    if (flow_grid_.empty()) return;
-    const auto v = voiding_curves(a.recording, a.ics);
-    const std::size_t n = grid_.size();
-    const PiecewiseLinear q(v.flow_ml_s.x, v.flow_ml_s.y);
-    for (std::size_t i = 0; i < flow_grid_.size(); ++i) {
-      const double e = (q.empty() ? 0.0 : q(flow_grid_[i])) - measured_[n + i];
-      r[n + i] = std::isfinite(e) ? e : kFailedResidual;
-    }
-  }
-
-  struct Less {
-    bool operator()(const std::vector<double>& a, const std::vector<double>& b) const {
-      return a < b;
-    }
+    return retry;
   };
-  const CalibrationProblem& pb_;
-  std::vector<double> grid_, flow_grid_, measured_;
-  std::map<std::vector<double>, Eigen::VectorXd, Less> cache_;
-  int simulations_ = 0;
-};
-
-// Eigen's LM functor interface over Residuals.
-struct LmFunctor {
-  using Scalar = double;
-  Residuals& residuals;
-  int operator()(const Eigen::VectorXd& u, Eigen::VectorXd& f) const {
-    f = residuals(u);
-    return 0;
-  }
-  int df(const Eigen::VectorXd& u, Eigen::MatrixXd& J) const {
-    J = residuals.jacobian(u);
-    return 0;
-  }
-  int inputs() const { return residuals.inputs(); }
-  int values() const { return residuals.values(); }
-};
-
-std::string status_text(Eigen::LevenbergMarquardtSpace::Status s) {
-  using namespace Eigen::LevenbergMarquardtSpace;
-  switch (s) {
-    case RelativeReductionTooSmall:
-      return "converged (relative reduction of the residual)";
-    case RelativeErrorTooSmall:
-      return "converged (relative change of the parameters)";
-    case RelativeErrorAndReductionTooSmall:
-      return "converged (residual and parameters)";
-    case CosinusTooSmall:
-      return "converged (gradient orthogonal to the residual)";
-    case TooManyFunctionEvaluation:
-      return "stopped: simulation budget reached";
-    case FtolTooSmall:
-    case XtolTooSmall:
-    case GtolTooSmall:
-      return "stopped: tolerance too small to improve further";
-    default:
-      return "stopped: solver status " + std::to_string(static_cast<int>(s));
-  }
 }
 
-}  // namespace
-
-ParameterSpec parameter_spec(const std::string& name) {
-  static const std::vector<ParameterSpec> all = {
-      {"mu", "kPa", 5.0, 0.1, 100.0, false},       {"k", "kPa", 10.0, 0.1, 1e4, false},
-      {"beta", "-", 0.15, 1e-3, 50.0, false},      {"tau", "s", 1e-4, 1e-6, 1e3, false},
-      {"k1", "Pa", 10.0, 1e-2, 1e5, false},        {"k2", "-", 1.0, 1e-2, 100.0, false},
-      {"r1", "cmH2O s/ml", 0.2, 1e-4, 20.0, true}, {"r2", "cmH2O s2/ml2", 0.05, 1e-5, 5.0, true},
-      {"p_open", "cmH2O", 20.0, 0.5, 150.0, true},
-  };
-  for (const auto& s : all)
-    if (s.name == name) return s;
-  usage_error("--calibrate: unknown parameter \"" + name + "\"",
-              "choose from mu, k, beta, tau, k1, k2, r1, r2, p_open");
+simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m) {
+  const double radius = std::cbrt(3.0 * units::m3_from_ml(reference_ml) / (4.0 * M_PI));
+  simulate::WallModel wall = simulate::sphere_wall(radius, thickness_m, 4);
+  simulate::fix_sphere_rigid_modes(wall);
+  return wall;
 }
 
-CalibrationResult calibrate(const CalibrationProblem& pb) {
-  const auto start = std::chrono::steady_clock::now();
-  Residuals residuals(pb);
-  if (residuals.filling_points() < 2)
-    usage_error("--calibrate: the measured filling curve and the fit volumes do not overlap");
-  Eigen::VectorXd u(pb.parameters.size());
-  for (std::size_t j = 0; j < pb.parameters.size(); ++j)
-    u[j] = std::log(
-        std::clamp(pb.parameters[j].initial, pb.parameters[j].lower, pb.parameters[j].upper));
+CystometryModel surrogate_of(const CystometryModel& model) {
+  CystometryModel surrogate = model;
+  const double thickness = model.wall.thickness.empty() ? 3e-3 : model.wall.thickness[0];
+  surrogate.wall = surrogate_sphere(model.protocol.start_ml, thickness);
+  return surrogate;
+}
 
-  LmFunctor functor{residuals};
-  Eigen::LevenbergMarquardt<LmFunctor> lm(functor);
-  lm.parameters.maxfev = std::max(2, pb.max_simulations / static_cast<int>(u.size() + 1));
-  lm.parameters.xtol = 1e-3;  // 0.1 % of the parameters
-  lm.parameters.ftol = 1e-4;
-  const auto status = lm.minimize(u);
-
-  CalibrationResult out;
-  out.status = status_text(status);
-  out.iterations = static_cast<int>(lm.iter);
-  const Eigen::VectorXd r = residuals(u, &out.fitted_filling);
-  const Eigen::MatrixXd J = residuals.jacobian(u);
-  const std::vector<double> p = residuals.parameters(u);
-  const int n = residuals.values(), m = static_cast<int>(u.size());
-  const double sigma2 = r.squaredNorm() / std::max(1, n - m);
-  const Eigen::MatrixXd cov =
-      sigma2 * (J.transpose() * J).completeOrthogonalDecomposition().pseudoInverse();
-  for (int j = 0; j < m; ++j) {
-    FittedParameter f;
-    const auto& s = pb.parameters[j];
-    f.name = s.name;
-    f.unit = s.unit;
-    f.initial = s.initial;
-    f.lower = s.lower;
-    f.upper = s.upper;
-    f.value = p[j];
-    f.standard_error = p[j] * std::sqrt(std::max(0.0, cov(j, j)));
-    f.ci_low = f.value - 1.96 * f.standard_error;
-    f.ci_high = f.value + 1.96 * f.standard_error;
-    out.parameters.push_back(f);
+FitOutcome calibrate(const CalibrationProblem& pb) {
+  if (pb.targets.size() < 2)
+    usage_error("--calibrate: fewer than two measured readings to fit",
+                "check --fit-volume-ml against the recording's volumes");
+  FitProblem fit;
+  for (const auto& p : pb.parameters) fit.parameters.push_back(p.fit);
+  fit.targets = pb.targets;
+  const double capacity = pb.targets.capacity_ml;
+  const bool voiding = pb.targets.voiding;
+  fit.model = cystometry_simulator(pb.model, pb.parameters, capacity, voiding);
+  fit.model_name = "wall of " + std::to_string(pb.model.wall.triangle_count()) + " triangles";
+  const double end = std::max(capacity, pb.data_end_ml);
+  if (end > capacity) fit.final_model = cystometry_simulator(pb.model, pb.parameters, end, voiding);
+  if (pb.use_surrogate) {
+    const CystometryModel surrogate = surrogate_of(pb.model);
+    fit.surrogate = cystometry_simulator(surrogate, pb.parameters, capacity, voiding);
+    fit.surrogate_name =
+        "sphere of " + std::to_string(surrogate.wall.triangle_count()) + " triangles (surrogate)";
   }
-  const Eigen::VectorXd rf = r.head(residuals.filling_points());
-  out.rmse_cmh2o = std::sqrt(rf.squaredNorm() / rf.size());
-  out.max_abs_error_cmh2o = rf.cwiseAbs().maxCoeff();
-  out.volume_lo_ml = pb.volume_lo_ml;
-  out.volume_hi_ml = pb.volume_hi_ml;
-  out.simulations = residuals.simulations();
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
+  fit.budget = pb.budget;
+  return fit_parameters(fit);
 }
 
 }  // namespace vesica::compare

@@ -1,88 +1,138 @@
 // --calibrate from the command line: the wall from --mesh, the protocol from the measured
-// recording's filling, the fit volumes from --fit-volume-ml (default: the measured filling
-// from --start-ml to capacity).
+// recording (its fill rate, its abdominal pressure at capacity), the data from the
+// recording's filling (--fit-volume-ml, default from --start-ml to capacity) and, when a
+// voiding parameter is fitted, its voiding.
 #include <algorithm>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "vesica/compare/Calibration.h"
 #include "vesica/compare/CalibrationRun.h"
-#include "vesica/compare/ModelComparison.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/Units.h"
 
 namespace vesica::compare {
 namespace {
 
-std::vector<ParameterSpec> parse_parameters(const std::string& list, const CalibrationModel& m) {
-  std::vector<ParameterSpec> specs;
+constexpr double kStandardFillRateMlMin = 50.0;  // ICS medium filling, docs/physics.md §7.1
+
+std::vector<ModelParameter> parse_parameters(const std::string& list, const CalibrationModel& m) {
+  std::vector<ModelParameter> specs;
   std::stringstream ss(list);
   for (std::string name; std::getline(ss, name, ',');) {
     if (name.empty()) continue;
-    ParameterSpec s = parameter_spec(name);
-    if (s.name == "mu") s.initial = m.mu_kpa;
-    if (s.name == "k") s.initial = m.k_kpa;
+    ModelParameter s = model_parameter(name);
+    double& start = s.fit.initial;
+    if (name == "mu") start = m.mu_kpa;
+    if (name == "k" && m.k_kpa > 0) start = m.k_kpa;
+    if (name == "straining" && m.straining_kpa > 0) start = m.straining_kpa;
+    if (name == "detrusor" && m.detrusor_kpa > 0) start = m.detrusor_kpa;
+    start = std::clamp(start, s.fit.lower, s.fit.upper);
     specs.push_back(s);
   }
   if (specs.empty()) usage_error("--calibrate: no parameter named");
   return specs;
 }
 
-std::string material_for(const std::vector<ParameterSpec>& specs) {
-  auto fits = [&](const char* n) {
-    return std::any_of(specs.begin(), specs.end(), [&](const auto& s) { return s.name == n; });
-  };
-  if (fits("k1") || fits("k2")) return "fibers";
-  if (fits("beta") || fits("tau")) return "maxwell";
+bool fits(const std::vector<ModelParameter>& specs, const char* name) {
+  return std::any_of(specs.begin(), specs.end(), [&](const auto& s) { return s.fit.name == name; });
+}
+
+std::string material_for(const std::vector<ModelParameter>& specs) {
+  if (fits(specs, "k1") || fits(specs, "k2")) return "fibers";
+  if (fits(specs, "beta") || fits(specs, "tau")) return "maxwell";
   return "neo-hookean";
+}
+
+// The fill rate the model fills at: given, else inferred from the recording, else ICS's
+// standard medium rate (said in the notes).
+double fill_rate(const CompareOptions& o, const RecordingAnalysis& a,
+                 std::vector<std::string>& notes) {
+  if (o.fill_rate_ml_min > 0) return o.fill_rate_ml_min;
+  if (a.ics.fill_rate_ml_min) return *a.ics.fill_rate_ml_min;
+  notes.push_back(
+      "the recording gives no fill rate: the model fills at the standard 50 ml/min "
+      "(give --fill-rate-ml-min)");
+  return kStandardFillRateMlMin;
+}
+
+CalibrationTargets targets_for(const CompareOptions& o, const RecordingAnalysis& a,
+                               const ComparisonOptions& comparison, bool voiding) {
+  double lo = o.simulation.start_ml, hi = o.simulation.start_ml;
+  if (!a.filling.x.empty()) {
+    lo = std::max(*std::min_element(a.filling.x.begin(), a.filling.x.end()), o.simulation.start_ml);
+    hi = *std::max_element(a.filling.x.begin(), a.filling.x.end());
+  }
+  if (comparison.volume_range_ml) {
+    lo = std::max(lo, comparison.volume_range_ml->first);
+    hi = std::min(hi, comparison.volume_range_ml->second);
+  }
+  CalibrationTargets t = filling_targets(a, lo, hi);
+  if (voiding && !add_voiding_targets(a, t))
+    usage_error(
+        "--calibrate: voiding parameters need a voiding phase (flow or voided volume) "
+        "in the measured recording");
+  if (t.series.empty() || t.size() < 2)
+    usage_error("--calibrate: the measured recording has fewer than two readings to fit",
+                "check --fit-volume-ml and --start-ml against the recording's volumes");
+  if (t.capacity_ml <= o.simulation.start_ml)
+    usage_error(
+        fmt::format("--calibrate: the data end at {:g} ml, not above --start-ml", t.capacity_ml),
+        "lower --start-ml");
+  return t;
+}
+
+CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
+                          const std::vector<ModelParameter>& specs,
+                          std::vector<std::string>& notes) {
+  CystometryModel m;
+  simulate::WallOptions wall_options;
+  wall_options.thickness_mm = o.simulation.thickness_mm;
+  wall_options.residual_ml = o.simulation.start_ml;
+  m.wall = simulate::load_wall(o.mesh, wall_options);
+  m.material.name = material_for(specs);
+  m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
+  if (o.simulation.k_kpa > 0.0)
+    m.material.params["K"] = units::pa_from_kpa(o.simulation.k_kpa);
+  else
+    m.material.params["K_per_mu"] = 1e3;  // nearly incompressible, as vesica-simulate
+  m.protocol.start_ml = o.simulation.start_ml;
+  // Without gravity: a stress-free membrane at the start volume carries its own weight
+  // with no stiffness (no equilibrium), and the measured Pdet is referred to the
+  // catheter, not to a hydrostatic column.
+  m.protocol.gravity = false;
+  m.protocol.fill_rate_ml_min = fill_rate(o, a, notes);
+  // The urethra opens on Pves = Pdet + Pabd: the model's abdomen at the recording's.
+  const auto& r = a.recording;
+  if (!r.pabd_cmh2o.empty())
+    m.protocol.pabd_cmh2o = std::max(0.0, r.pabd_cmh2o[a.ics.capacity_row]);
+  if (o.simulation.straining_kpa > 0) m.protocol.straining_kpa = o.simulation.straining_kpa;
+  if (o.simulation.detrusor_kpa > 0) m.protocol.detrusor_kpa = o.simulation.detrusor_kpa;
+  return m;
 }
 
 }  // namespace
 
-CalibrationResult calibrate_from_options(const CompareOptions& o,
-                                         const RecordingAnalysis& recording,
+CalibrationResult calibrate_from_options(const CompareOptions& o, const RecordingAnalysis& a,
                                          const ComparisonOptions& comparison) {
-  const Curve& measured = recording.filling;
   CalibrationProblem pb;
   pb.parameters = parse_parameters(o.calibrate, o.simulation);
-  if (measured.x.size() < 2)
-    usage_error("--calibrate: the measured recording has no filling curve");
-  const double measured_lo = *std::min_element(measured.x.begin(), measured.x.end());
-  const double measured_hi = *std::max_element(measured.x.begin(), measured.x.end());
-  pb.volume_lo_ml = std::max(measured_lo, o.simulation.start_ml);
-  pb.volume_hi_ml = measured_hi;
-  if (comparison.volume_range_ml) {
-    pb.volume_lo_ml = std::max(pb.volume_lo_ml, comparison.volume_range_ml->first);
-    pb.volume_hi_ml = std::min(pb.volume_hi_ml, comparison.volume_range_ml->second);
-  }
-  pb.measured_filling = measured;
-  pb.max_simulations = o.max_simulations;
-
-  simulate::WallOptions wall_options;
-  wall_options.thickness_mm = o.simulation.thickness_mm;
-  wall_options.residual_ml = o.simulation.start_ml;
-  pb.wall = simulate::load_wall(o.mesh, wall_options);
-  pb.material.name = material_for(pb.parameters);
-  pb.material.params = {{"mu", o.simulation.mu_kpa * 1e3}};
-  if (o.simulation.k_kpa > 0.0)
-    pb.material.params["K"] = o.simulation.k_kpa * 1e3;
-  else
-    pb.material.params["K_per_mu"] = 1e3;  // nearly incompressible, as vesica-simulate
-  pb.protocol.start_ml = o.simulation.start_ml;
-  // Without gravity: a stress-free membrane at the start volume carries its own weight
-  // with no stiffness (no equilibrium), and the measured Pdet is referred to the
-  // catheter, not to a hydrostatic column.
-  pb.protocol.gravity = false;
-  pb.protocol.capacity_ml = std::max(pb.volume_hi_ml, o.simulation.start_ml + 1.0);
-  // outlet parameters act on voiding: simulate it and fit the measured flow as well
-  const bool outlet = std::any_of(pb.parameters.begin(), pb.parameters.end(),
-                                  [](const ParameterSpec& s) { return s.outlet; });
-  pb.protocol.void_after_fill = outlet;
-  pb.run.filling_only = !outlet;
-  if (outlet) {
-    pb.measured_flow = voiding_curves(recording.recording, recording.ics).flow_ml_s;
-    if (pb.measured_flow.x.size() < 2)
-      usage_error("--calibrate: outlet parameters need a measured flow channel");
-  }
-  return calibrate(pb);
+  const bool voiding = std::any_of(pb.parameters.begin(), pb.parameters.end(),
+                                   [](const ModelParameter& p) { return p.fit.voiding; });
+  pb.targets = targets_for(o, a, comparison, voiding);
+  std::vector<std::string> notes;
+  pb.model = model_for(o, a, pb.parameters, notes);
+  if (a.ics.capacity_ml) pb.data_end_ml = *a.ics.capacity_ml;
+  pb.use_surrogate = o.simulation.surrogate;
+  pb.budget.surrogate_starts = o.simulation.surrogate_starts;
+  pb.budget.model_simulations = o.max_simulations;
+  FitOutcome out = calibrate(pb);
+  if (voiding) out.result.voiding = voiding_agreement(a, out.final_run.recording);
+  notes.push_back(fmt::format("the model fills at {:.3g} ml/min from {:g} ml",
+                              pb.model.protocol.fill_rate_ml_min, pb.model.protocol.start_ml));
+  out.result.notes.insert(out.result.notes.begin(), notes.begin(), notes.end());
+  return out.result;
 }
 
 }  // namespace vesica::compare

@@ -16,8 +16,10 @@ std::vector<double> volume_range_from_text(const std::string& text) {
 
 void add_calibration_entries(CompareOptions& o, ParameterTable& t) {
   CalibrationModel& m = o.simulation;
-  t.text("calibrate", o.calibrate, "mu[,k,beta,tau,k1,k2,r1,r2,p_open]",
-         "fit these parameters to the measured Pdet(V) (needs the mesh input)");
+  t.text("calibrate", o.calibrate,
+         "mu[,k,beta,tau,k1,k2,p_open,r1,r2,detrusor,straining,activation_ramp]",
+         "fit these parameters to the measured recording: filling Pdet(V), and with a voiding "
+         "parameter also flow, Pdet and voided volume while voiding (needs the mesh input)");
   t.number("mu_kpa", m.mu_kpa, "kPa",
            NumberRange::at_least(0.1).at_most(100).because("the calibration searches mu there"),
            "shear modulus of the wall the calibration starts from");
@@ -28,9 +30,19 @@ void add_calibration_entries(CompareOptions& o, ParameterTable& t) {
            "wall thickness in the calibration");
   t.number("start_ml", m.start_ml, "ml", NumberRange::greater_than(0).at_most(5000),
            "volume the calibration's simulations start from");
+  t.number("straining_kpa", m.straining_kpa, "kPa", NumberRange::at_least(0).at_most(20),
+           "abdominal straining that voids the calibration's model (0: the simulation's "
+           "default); the start value when straining is fitted");
+  t.number("detrusor_kpa", m.detrusor_kpa, "kPa", NumberRange::at_least(0).at_most(500),
+           "detrusor contraction that voids the calibration's model (0: the simulation's "
+           "default); the start value when detrusor is fitted");
   t.integer("max_simulations", o.max_simulations, "-",
-            NumberRange::at_least(1).at_most(1000).because("each is a full filling simulation"),
-            "calibration budget (level-1 simulations)");
+            NumberRange::at_least(1).at_most(1000).because("each is a full simulation"),
+            "calibration budget of the mesh's simulations (its Jacobian included)");
+  t.flag_off("no_surrogate", m.surrogate,
+             "fit on the mesh alone, without the fast surrogate's search first");
+  t.integer("surrogate_starts", m.surrogate_starts, "-", NumberRange::at_least(1).at_most(64),
+            "starting points of the surrogate's search");
 }
 
 }  // namespace
@@ -53,6 +65,14 @@ ParameterTable parameter_table(CompareOptions& o) {
       "volumes compared and fitted (none: the overlap of the recordings)",
       [&o](const std::string& text) { o.fit_volume_ml = volume_range_from_text(text); },
       [&o] { return nlohmann::json(o.fit_volume_ml); });
+  t.number_or_word("fill_rate_ml_min", o.fill_rate_ml_min, 0.0, "ml/min",
+                   NumberRange::greater_than(0).at_most(1000).or_word(
+                       "auto", "inferred from a recording with time"),
+                   "infusion rate of the measured filling (a table without time has none)");
+  t.number_or_word("capacity_ml", o.capacity_ml, 0.0, "ml",
+                   NumberRange::greater_than(0).at_most(5000).or_word(
+                       "voided", "the voided volume: no residual"),
+                   "bladder volume before voiding of a voiding table without volume columns");
   t.number("spike_cmh2o", o.artefacts.spike_cmh2o, "cmH2O",
            NumberRange::greater_than(0).at_most(100),
            "rise of Pves and Pabd together that flags a cough or strain row");

@@ -49,6 +49,7 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
   if (cal) {
     for (const auto& fp : cal->parameters) j["fitted_" + fp.name] = fp.value;
     j["fit_rmse_cmh2o"] = cal->rmse_cmh2o;
+    j["fit_status"] = cal->status;  // "fitted: ...", "no better than a straight line: ..."
   }
   return j;
 }
@@ -67,7 +68,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
       measured = std::make_unique<RecordingAnalysis>(
-          analyse(io::read_recording(o.measured, measured_reader), o.artefacts));
+          analyse(io::read_recording(o.measured, measured_reader), o.artefacts,
+                  RecordingFacts{o.fill_rate_ml_min, o.capacity_ml}));
       record.add_input(o.measured);
     }
     if (!o.simulated.empty()) {
@@ -114,8 +116,11 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   {
     PhaseTimer t(record, "write");
     const fs::path out(o.output);
-    write_text_atomically(out / "metrics.json", metrics.dump(2) + "\n");
-    write_text_atomically(out / "index.html", report_html(in));
+    // One folder, replaced whole: never a new metrics.json beside an old index.html.
+    write_atomically(out, [&](const fs::path& tmp) {
+      write_text_atomically(tmp / "metrics.json", metrics.dump(2) + "\n");
+      write_text_atomically(tmp / "index.html", report_html(in));
+    });
     record.add_output(out / "index.html");
     record.add_output(out / "metrics.json");
   }

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "vesica/core/Units.h"
+
 namespace vesica::compare {
 namespace {
 
@@ -80,6 +82,33 @@ void fill_flow_times(const Recording& r, IcsParameters& p) {
   p.voiding_start_s = start;
 }
 
+// A row during flow: positive flow, or (a table without flow) a rise of the voided volume.
+bool flowing(const Recording& r, const std::vector<double>& voided, std::size_t i) {
+  if (r.has_flow()) return r.flow_ml_s[i] > 0.0;
+  return i > 0 && voided[i] > voided[i - 1];
+}
+
+// Opening, closing and maximum Pdet: first/last unflagged rows with flow; maximum: every
+// unflagged row from the onset to the end of flow, even where the flow momentarily reads zero.
+void fill_voiding_pressures(const Recording& r, const std::vector<bool>& flagged,
+                            const std::vector<double>& voided, IcsParameters& p) {
+  Maybe first, last, highest;
+  std::size_t lo = r.rows(), hi = 0;
+  for (std::size_t i = 0; i < r.rows(); ++i) {
+    if (!flowing(r, voided, i)) continue;
+    lo = std::min(lo, i);
+    hi = i;
+    if (flagged[i]) continue;
+    if (!first) first = r.pdet_cmh2o(i);
+    last = r.pdet_cmh2o(i);
+  }
+  for (std::size_t i = lo; i <= hi && i < r.rows(); ++i)
+    if (!flagged[i]) highest = highest ? std::max(*highest, r.pdet_cmh2o(i)) : r.pdet_cmh2o(i);
+  p.pdet_opening_cmh2o = first;
+  p.pdet_closing_cmh2o = last;
+  p.pdet_max_voiding_cmh2o = highest;
+}
+
 void fill_voiding(const Recording& r, const std::vector<bool>& flagged, IcsParameters& p) {
   if (!r.has_flow() && r.voided_ml.empty()) return;
   const auto voided = r.voided_or_integrated_ml();
@@ -87,37 +116,46 @@ void fill_voiding(const Recording& r, const std::vector<bool>& flagged, IcsParam
   p.pvr_ml = std::max(0.0, r.bladder_volume_ml(r.rows() - 1));
   if (*p.voided_ml + *p.pvr_ml > 0)
     p.voiding_efficiency = *p.voided_ml / (*p.voided_ml + *p.pvr_ml);
+  if (!r.has_time())
+    p.notes.push_back(
+        "no time column: flow time, voiding time, Qave and time to Qmax "
+        "need one and are left out");
+  if (r.has_pdet()) fill_voiding_pressures(r, flagged, voided, p);
   if (!r.has_flow()) return;
   const auto& q = r.flow_ml_s;
   const std::size_t imax = std::max_element(q.begin(), q.end()) - q.begin();
   if (q[imax] <= 0.0) return;
   p.qmax_ml_s = q[imax];
-  fill_flow_times(r, p);
-  if (p.flow_time_s && *p.flow_time_s > 0) p.qave_ml_s = *p.voided_ml / *p.flow_time_s;
-  if (p.voiding_start_s) p.time_to_qmax_s = r.time_s[imax] - *p.voiding_start_s;
+  if (r.has_time()) {
+    fill_flow_times(r, p);
+    if (p.flow_time_s && *p.flow_time_s > 0) p.qave_ml_s = *p.voided_ml / *p.flow_time_s;
+    if (p.voiding_start_s) p.time_to_qmax_s = r.time_s[imax] - *p.voiding_start_s;
+  }
   if (!r.has_pdet()) return;
   p.pdet_qmax_cmh2o = r.pdet_cmh2o(imax);
-  // opening/closing: first/last unflagged rows with flow; maximum: every unflagged row
-  // from the onset to the end of flow, even where the flow momentarily reads zero
-  Maybe first, last, highest;
-  std::size_t lo = r.rows(), hi = 0;
-  for (std::size_t i = 0; i < r.rows(); ++i) {
-    if (q[i] <= 0.0) continue;
-    lo = std::min(lo, i);
-    hi = i;
-    if (flagged[i]) continue;
-    if (!first) first = r.pdet_cmh2o(i);
-    last = r.pdet_cmh2o(i);
-  }
-  for (std::size_t i = lo; i <= hi; ++i)
-    if (!flagged[i]) highest = highest ? std::max(*highest, r.pdet_cmh2o(i)) : r.pdet_cmh2o(i);
-  p.pdet_opening_cmh2o = first;
-  p.pdet_closing_cmh2o = last;
-  p.pdet_max_voiding_cmh2o = highest;
   p.booi = *p.pdet_qmax_cmh2o - 2.0 * *p.qmax_ml_s;
   p.bci = *p.pdet_qmax_cmh2o + 5.0 * *p.qmax_ml_s;
   p.booi_class = booi_class(*p.booi);
   p.bci_class = bci_class(*p.bci);
+}
+
+// The infusion rate: the least-squares slope of the bladder volume against time over the
+// filling rows (start to capacity); none without time.
+void fill_rate(const Recording& r, IcsParameters& p) {
+  if (!r.has_time() || p.capacity_row <= p.filling_start_row) return;
+  double n = 0, mt = 0, mv = 0;
+  for (std::size_t i = p.filling_start_row; i <= p.capacity_row; ++i, n += 1) {
+    mt += r.time_s[i];
+    mv += r.bladder_volume_ml(i);
+  }
+  mt /= n;
+  mv /= n;
+  double stt = 0, stv = 0;
+  for (std::size_t i = p.filling_start_row; i <= p.capacity_row; ++i) {
+    stt += (r.time_s[i] - mt) * (r.time_s[i] - mt);
+    stv += (r.time_s[i] - mt) * (r.bladder_volume_ml(i) - mv);
+  }
+  if (stt > 0 && stv > 0) p.fill_rate_ml_min = stv / stt * units::kSecondsPerMinute;
 }
 
 nlohmann::json value(const Maybe& m) {
@@ -143,6 +181,7 @@ IcsParameters compute_ics(const Recording& r, const std::vector<ArtefactFlag>& f
   IcsParameters p;
   fill_filling(r, flagged, p);
   fill_desires(r, p);
+  fill_rate(r, p);
   fill_voiding(r, flagged, p);
   return p;
 }
@@ -174,6 +213,8 @@ nlohmann::json to_json(const IcsParameters& p) {
       {"bci", value(p.bci)},
       {"bci_class", p.bci_class},
       {"voiding_start_s", value(p.voiding_start_s)},
+      {"fill_rate_ml_min", value(p.fill_rate_ml_min)},
+      {"notes", p.notes},
   };
 }
 

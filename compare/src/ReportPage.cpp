@@ -192,9 +192,16 @@ std::string flags_section(const RecordingAnalysis* a, const std::string& name) {
   if (a->flags.empty()) return o.str() + "<p>No artefacts flagged.</p>\n";
   o << "<table class=\"flags\"><tr><th>Line</th><th>Event</th><th>Artefact</th>"
     << "<th>Why</th></tr>\n";
-  for (const auto& f : a->flags)
+  // The first rows only: a recording of noise can flag every one of its rows.
+  constexpr std::size_t kShownFlags = 200;
+  for (std::size_t i = 0; i < a->flags.size() && i < kShownFlags; ++i) {
+    const auto& f = a->flags[i];
     o << "<tr><td>" << f.line << "</td><td>" << xml_escape(f.event) << "</td><td>"
       << xml_escape(f.kind) << "</td><td>" << xml_escape(f.detail) << "</td></tr>\n";
+  }
+  if (a->flags.size() > kShownFlags)
+    o << "<tr><td colspan=\"4\">... and " << a->flags.size() - kShownFlags
+      << " more (metrics.json lists them all)</td></tr>\n";
   return o.str() + "</table>\n";
 }
 

@@ -36,6 +36,36 @@ double nice_step(double span, int count) {
   return 10 * p;
 }
 
+// A series drawn with at most about this many points: a page stays a page however long
+// the recording (two million rows gave a 1.7 GB report).
+constexpr std::size_t kMaxDrawnPoints = 4000;
+
+// Thins a long series to the lowest and highest point of each run of consecutive points,
+// in their order, so that peaks (Qmax, a cough) survive.
+void thin(std::vector<double>& x, std::vector<double>& y) {
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n <= kMaxDrawnPoints) return;
+  const std::size_t run = (n + kMaxDrawnPoints / 2 - 1) / (kMaxDrawnPoints / 2);
+  std::vector<double> tx, ty;
+  for (std::size_t start = 0; start < n; start += run) {
+    const std::size_t end = std::min(n, start + run);
+    std::size_t lo = start, hi = start;
+    for (std::size_t i = start; i < end; ++i) {
+      if (y[i] < y[lo]) lo = i;
+      if (y[i] > y[hi]) hi = i;
+    }
+    const std::size_t first = std::min(lo, hi), last = std::max(lo, hi);
+    tx.push_back(x[first]);
+    ty.push_back(y[first]);
+    if (last != first) {
+      tx.push_back(x[last]);
+      ty.push_back(y[last]);
+    }
+  }
+  x.swap(tx);
+  y.swap(ty);
+}
+
 std::string slug(const std::string& s) {
   std::string out;
   for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
@@ -91,6 +121,7 @@ SvgPlot& SvgPlot::y_range(double lo, double hi) {
 }
 
 SvgPlot& SvgPlot::add(Series s) {
+  thin(s.x, s.y);
   if (s.color.empty()) s.color = kPalette[series_.size() % (sizeof kPalette / sizeof *kPalette)];
   series_.push_back(std::move(s));
   return *this;

@@ -59,10 +59,10 @@ std::string Parameter::default_text() const {
   std::string text = shown(default_value);
   if (text.empty()) return "none";
   const bool numeric = kind == Kind::Number || kind == Kind::Integer;
-  if (numeric && default_value.is_number()) {
-    // A special value's meaning is in accepted(); its unit would mislead ("0 mm" for auto).
-    if (!range.meaning_of(default_value.get<double>()).empty()) return text;
-  }
+  // A special value's or a word's meaning is in accepted(); a unit would mislead ("0 mm",
+  // "auto mm" for auto).
+  if (numeric && !default_value.is_number()) return text;
+  if (numeric && !range.meaning_of(default_value.get<double>()).empty()) return text;
   return numeric && !unit.empty() && unit != "-" ? text + " " + unit : text;
 }
 

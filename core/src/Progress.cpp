@@ -3,21 +3,36 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 namespace vesica {
 namespace {
 bool g_quiet = false;
-}
 
-void set_quiet(bool quiet) { g_quiet = quiet; }
-bool is_quiet() { return g_quiet; }
+// On a terminal; or when `vesica run` asks for it (VESICA_PROGRESS=1): the stage's stderr
+// is then the runner's pipe, and the runner draws the line on its own terminal.
+bool progress_wanted() {
+  const char* relayed = std::getenv("VESICA_PROGRESS");
+  return ::isatty(STDERR_FILENO) || (relayed && std::string(relayed) == "1");
+}
+}  // namespace
+
+void set_quiet(bool quiet) {
+  g_quiet = quiet;
+}
+bool is_quiet() {
+  return g_quiet;
+}
 
 Progress::Progress(std::string stage)
     : stage_(std::move(stage)),
       start_(std::chrono::steady_clock::now()),
-      enabled_(!g_quiet && ::isatty(STDERR_FILENO)) {}
+      enabled_(!g_quiet && progress_wanted()) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::update(const std::string& step, double fraction) {
   if (!enabled_) return;

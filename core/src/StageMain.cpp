@@ -6,6 +6,8 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Progress.h"
+#include "vesica/core/StageSafety.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/core/Version.h"
 
@@ -70,13 +72,25 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
   }
   set_quiet(options.json);
   configure_logging(options.json, options.verbose);
+  ignore_file_size_signal();
+  // The printed line, tool name included, stays within kMaxErrorLine.
+  const auto error_line = [&](const char* what) { return single_line(tool + ": error: " + what); };
   try {
-    return body();
+    protect_command_line_inputs(app);
+    begin_staging();  // every output replaced together, and only on success
+    const int code = body();
+    if (code == 0)
+      commit_staged_outputs();
+    else
+      discard_staged_outputs();
+    return code;
   } catch (const Error& e) {
-    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    discard_staged_outputs();
+    std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return e.exit_code();
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s: error: %s\n", tool.c_str(), e.what());
+    discard_staged_outputs();
+    std::fprintf(stderr, "%s\n", error_line(e.what()).c_str());
     return 1;
   }
 }
@@ -84,14 +98,16 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
 std::string default_manifest_path(const CommonOptions& options, const std::string& output) {
   if (!options.manifest.empty()) return options.manifest;
   namespace fs = std::filesystem;
+  // In the hidden folder .vesica/ (where `vesica run` keeps its manifests too), so that a
+  // stage leaves beside its outputs only the files it was asked for.
   if (!options.report.empty()) {
     fs::path r(options.report);
-    return (r.parent_path() / (r.stem().string() + ".manifest.json")).string();
+    return (r.parent_path() / ".vesica" / (r.stem().string() + ".manifest.json")).string();
   }
   // "ct/" is the folder "ct": its manifest goes beside it, not inside it.
   fs::path out = fs::path(output).lexically_normal();
   if (!out.has_filename() && out.has_parent_path()) out = out.parent_path();
-  return out.string() + ".manifest.json";
+  return (out.parent_path() / ".vesica" / (out.filename().string() + ".manifest.json")).string();
 }
 
 }  // namespace vesica

@@ -5,13 +5,16 @@
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Version.h"
 
 namespace fs = std::filesystem;
 
 namespace vesica {
 
-const char* version() { return kVersion; }
+const char* version() {
+  return kVersion;
+}
 
 std::string utc_now_iso8601() {
   const std::time_t t = std::time(nullptr);
@@ -23,11 +26,14 @@ std::string utc_now_iso8601() {
 }
 
 FileRecord record_file(const fs::path& path) {
-  if (!fs::exists(path)) fail(path.string(), "does not exist");
+  // An output of this run may still wait under its temporary name (StagedOutputs.h); the
+  // rename keeps its content and modification time.
+  const fs::path content = staged_content(path).value_or(path);
+  if (!fs::exists(content)) fail(path.string(), "does not exist");
   FileRecord f;
   f.path = path.string();
-  f.hash = content_hash(path);
-  const FileStamp s = file_stamp(path);
+  f.hash = content_hash(content);
+  const FileStamp s = file_stamp(content);
   f.size = s.size;
   f.mtime_ns = s.mtime_ns;
   return f;
@@ -53,8 +59,12 @@ StageRecord::StageRecord(std::string tool, int argc, const char* const* argv)
   for (int i = 1; i < argc; ++i) invocation_.emplace_back(argv[i]);
 }
 
-void StageRecord::add_input(const fs::path& path) { inputs_.push_back(record_file(path)); }
-void StageRecord::add_output(const fs::path& path) { outputs_.push_back(path); }
+void StageRecord::add_input(const fs::path& path) {
+  inputs_.push_back(record_file(path));
+}
+void StageRecord::add_output(const fs::path& path) {
+  outputs_.push_back(path);
+}
 
 void StageRecord::add_timing(const std::string& phase, double seconds) {
   timings_[phase] = timings_.value(phase, 0.0) + seconds;
@@ -98,8 +108,8 @@ PhaseTimer::PhaseTimer(StageRecord& record, std::string phase)
     : record_(record), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {}
 
 PhaseTimer::~PhaseTimer() {
-  record_.add_timing(phase_,
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+  record_.add_timing(
+      phase_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
 }
 
 }  // namespace vesica

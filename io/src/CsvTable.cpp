@@ -1,5 +1,7 @@
 #include "vesica/io/CsvTable.h"
 
+#include <algorithm>
+#include <array>
 #include <fstream>
 
 #include "vesica/core/Error.h"
@@ -11,6 +13,30 @@ constexpr const char* kUtf8Bom = "\xEF\xBB\xBF";
 
 void skip_byte_order_mark(std::string& first_line) {
   if (first_line.rfind(kUtf8Bom, 0) == 0) first_line.erase(0, 3);
+}
+
+bool all_empty(const std::vector<std::string>& cells) {
+  return std::all_of(cells.begin(), cells.end(), [](const std::string& c) { return c.empty(); });
+}
+
+// One line into `text`, at most `max_bytes` of it: false at the end of the file. A longer
+// line is an error before it is held in memory (a single 5 MB cell, a binary file).
+bool next_line(std::istream& in, std::vector<char>& buffer, std::size_t max_bytes, int line,
+               const std::string& file, std::string& text) {
+  if (!in.good()) return false;
+  buffer.resize(max_bytes + 2);  // room for one byte too many, and the terminator
+  in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  const auto got = static_cast<std::size_t>(in.gcount());
+  if (in.eof()) {  // the last line, without a line break
+    text.assign(buffer.data(), got);
+    return got > 0;
+  }
+  if (in.fail())
+    fail(file,
+         "line " + std::to_string(line) + " is longer than " + std::to_string(max_bytes) + " bytes",
+         "not a CSV recording, or a cell holds far more than a value");
+  text.assign(buffer.data(), got - 1);  // without the '\n'
+  return true;
 }
 
 }  // namespace
@@ -48,30 +74,67 @@ std::vector<std::string> split_csv_line(const std::string& line, char separator)
   return cells;
 }
 
-CsvTable read_csv_table(const std::filesystem::path& csv, const CsvOptions& options) {
+char detect_separator(const std::string& header_line) {
+  constexpr std::array<char, 3> candidates = {',', ';', '\t'};
+  std::array<std::size_t, 3> count{};
+  bool quoted = false;
+  for (char c : header_line) {
+    if (c == '"') quoted = !quoted;
+    if (quoted) continue;
+    for (std::size_t k = 0; k < candidates.size(); ++k) count[k] += c == candidates[k];
+  }
+  const auto most = std::max_element(count.begin(), count.end());  // first on ties: ','
+  return *most == 0 ? ',' : candidates[static_cast<std::size_t>(most - count.begin())];
+}
+
+void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
+                   const std::function<void(const CsvHeader&)>& on_header,
+                   const std::function<void(const std::vector<std::string>&, int)>& on_row) {
   const std::string file = csv.string();
-  std::ifstream in(csv);
+  std::ifstream in(csv, std::ios::binary);
   if (!in) fail(file, "cannot open the table", "check the path");
-  CsvTable table;
+  CsvHeader header;
   bool have_header = false;
+  std::size_t rows = 0;
   std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
+  std::vector<char> buffer;
+  for (int line = 1; next_line(in, buffer, options.max_line_bytes, line, file, text); ++line) {
     if (line == 1) skip_byte_order_mark(text);
     const std::string t = trim(text);
     if (t.empty() || t[0] == '#') continue;
-    std::vector<std::string> cells = split_csv_line(t, options.separator);
     if (!have_header) {
-      table.header = std::move(cells);
+      header.separator = options.separator ? options.separator : detect_separator(t);
+      header.names = split_csv_line(t, header.separator);
       have_header = true;
+      on_header(header);
       continue;
     }
-    if (cells.size() != table.header.size())
+    const std::vector<std::string> cells = split_csv_line(t, header.separator);
+    if (all_empty(cells)) continue;
+    if (cells.size() != header.names.size())
       fail(file, "row " + std::to_string(line) + ": " + std::to_string(cells.size()) +
-                     " cells, the header has " + std::to_string(table.header.size()));
-    table.rows.push_back(std::move(cells));
-    table.line.push_back(line);
+                     " cells, the header has " + std::to_string(header.names.size()));
+    if (++rows > options.max_rows)
+      fail(file, "more than " + std::to_string(options.max_rows) + " data rows",
+           "downsample the recording (vesica reads at most that many rows)");
+    on_row(cells, line);
   }
+  if (in.bad()) fail(file, "could not be read to the end");
   if (!have_header) fail(file, "no header row", "the first non-comment line names the columns");
+}
+
+CsvTable read_csv_table(const std::filesystem::path& csv, const CsvOptions& options) {
+  CsvTable table;
+  read_csv_rows(
+      csv, options,
+      [&](const CsvHeader& h) {
+        table.header = h.names;
+        table.separator = h.separator;
+      },
+      [&](const std::vector<std::string>& cells, int line) {
+        table.rows.push_back(cells);
+        table.line.push_back(line);
+      });
   return table;
 }
 

@@ -73,7 +73,9 @@ LabelMap read_label_map(const std::filesystem::path& path, int label) {
   const std::string file = path.string();
   if (!std::filesystem::exists(path)) fail(file, "label map not found");
   require_three_dimensions(file);
-  if (label == 0 && is_slicer_segmentation(path))
+  // A .seg.nrrd without segment keys was written by a tool that knows only NRRD (Slicer
+  // reads such a file as one segment per label value): any non-zero voxel is inside.
+  if (label == 0 && is_slicer_segmentation(path) && lists_segments(path))
     label = bladder_label_value(read_segments(path), file);
   auto reader = itk::ImageFileReader<ReadImage>::New();
   reader->SetFileName(file);

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <set>
 
 #include <Eigen/Geometry>
 
+#include "MshCheck.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -94,7 +96,25 @@ void append_element_data(const std::string& name, const Eigen::MatrixXd& values,
   gmsh::view::write(view, file, true);
 }
 
-void write_model(const VolumeMesh& mesh, const std::string& file) {
+// gmsh writes through stdio without checking it, so a full disk or a file-size limit
+// leaves a cut file behind a successful call: the file must end with the last section
+// written.
+void require_complete(const std::string& file, const std::string& last_section,
+                      const std::string& target) {
+  std::ifstream in(file, std::ios::binary | std::ios::ate);
+  const std::string tail = "\n" + last_section + "\n";
+  const auto size = static_cast<std::streamoff>(in.tellg());
+  std::string end(tail.size(), '\0');
+  if (in && size >= static_cast<std::streamoff>(tail.size())) {
+    in.seekg(size - static_cast<std::streamoff>(tail.size()));
+    in.read(end.data(), static_cast<std::streamsize>(end.size()));
+  }
+  if (!in || end != tail)
+    fail(target, "gmsh could not write the whole mesh (the file ends before " + last_section + ")",
+         "check free disk space and quotas");
+}
+
+void write_model(const VolumeMesh& mesh, const std::string& file, const std::string& target) {
   gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
   gmsh::option::setNumber("Mesh.Binary", 0);
   gmsh::option::setNumber("Mesh.SaveAll", 0);
@@ -105,6 +125,8 @@ void write_model(const VolumeMesh& mesh, const std::string& file) {
   append_element_data("thickness_mm", mesh.thickness_mm, mesh.tets.rows(), file);
   append_element_data("fiber1", mesh.fiber1, mesh.tets.rows(), file);
   append_element_data("fiber2", mesh.fiber2, mesh.tets.rows(), file);
+  const bool views = mesh.thickness_mm.size() > 0 || mesh.fiber1.rows() > 0;
+  require_complete(file, views ? "$EndElementData" : "$EndElements", target);
 }
 
 // Runs `body` in a quiet gmsh session; gmsh's errors and exceptions become one
@@ -295,7 +317,7 @@ void write_msh(const VolumeMesh& mesh, const std::filesystem::path& path) {
     with_gmsh(path.string(), "gmsh could not write the mesh", [&] {
       gmsh::model::add("vesica-mesh");
       build_model(mesh);
-      write_model(mesh, tmp.string());
+      write_model(mesh, tmp.string(), path.string());
     });
   });
 }
@@ -303,6 +325,7 @@ void write_msh(const VolumeMesh& mesh, const std::filesystem::path& path) {
 MshFile read_msh(const std::filesystem::path& path) {
   const std::string file = path.string();
   if (!std::filesystem::exists(path)) fail(file, "file not found");
+  detail::check_msh_file(path);
   MshFile out;
   with_gmsh(file, "gmsh could not read the mesh", [&] {
     gmsh::open(file);

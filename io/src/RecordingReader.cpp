@@ -92,7 +92,14 @@ std::optional<std::string> bracket_unit(const std::string& header) {
 }
 
 std::string column_place(const std::string& header) {
-  return "row 1, column \"" + header + "\"";
+  return "row 1, column \"" + single_line(header, 40) + "\"";
+}
+
+// "columns: a, b, c" as a hint for a file whose columns were not recognised.
+std::string columns_found(const std::vector<std::string>& header) {
+  std::string list;
+  for (const std::string& h : header) list += (list.empty() ? "" : ", ") + h;
+  return "its columns: " + single_line(list, 100);
 }
 
 double default_factor(const Channel& ch, const ReaderOptions& options, const std::string& file,
@@ -168,10 +175,30 @@ std::optional<double> parse_number(const std::string& cell) {
   return v;
 }
 
-std::string format_seconds(double s) {
+// "12,5" in a table separated by ';' or tabs (a European export) is 12.5. A cell with both
+// a comma and a point ("1.234,5") is left alone and refused: its grouping is ambiguous.
+std::string with_decimal_point(const std::string& cell, bool decimal_comma) {
+  if (!decimal_comma || cell.find('.') != std::string::npos) return cell;
+  const auto comma = cell.find(',');
+  if (comma == std::string::npos || cell.find(',', comma + 1) != std::string::npos) return cell;
+  std::string s = cell;
+  s[comma] = '.';
+  return s;
+}
+
+// A cell as quoted in an error: short, so that the line stays readable.
+std::string quoted_cell(const std::string& cell) {
+  return "\"" + single_line(cell, 40) + "\"";
+}
+
+std::string format_number(double v) {
   std::ostringstream o;
-  o << s << " s";
+  o << v;
   return o.str();
+}
+
+std::string format_seconds(double s) {
+  return format_number(s) + " s";
 }
 
 std::vector<double>* target(Recording& r, const std::string& key) {
@@ -201,35 +228,54 @@ std::vector<BoundColumn> bind_columns(const std::vector<std::string>& header,
     return std::any_of(bound.begin(), bound.end(),
                        [&](const BoundColumn& b) { return std::string(b.channel->key) == key; });
   };
-  const std::string hint = "map it with --columns KEY=NAME";
-  if (!has("time")) fail(file, "missing column for time (time_s, time_min or time)", hint);
+  const std::string hint = columns_found(header) + "; map one with --columns KEY=NAME";
   if (!has("pdet") && !(has("pves") && has("pabd")))
     fail(file, "missing columns for pressure (pdet_cmh2o, or pves_cmh2o and pabd_cmh2o)", hint);
-  if (!has("infused") && !has("volume"))
-    fail(file, "missing column for volume (infused_ml or volume_ml)", hint);
+  const bool filled = has("infused") || has("volume");
+  if (has("time") && !filled && !has("voided") && !has("flow"))
+    fail(file, "missing column for volume (infused_ml, volume_ml, voided_ml or flow_ml_s)", hint);
+  if (!has("time") && !filled && !has("voided"))
+    fail(file,
+         "missing column for time, or for the volume a table without time is read at "
+         "(infused_ml or volume_ml: filling; voided_ml: voiding)",
+         hint);
   return bound;
 }
 
-void read_cell(const BoundColumn& b, const std::string& cell, int line, const std::string& file,
-               Recording& r) {
-  const std::string place =
-      "row " + std::to_string(line) + ", column \"" + b.header + "\": \"" + cell + "\"";
+// The channel that orders the rows: time, else (a table read off at volume steps) the
+// infused, bladder or voided volume.
+const char* row_order_key(const std::vector<BoundColumn>& bound) {
+  for (const char* key : {"time", "infused", "volume", "voided"})
+    for (const auto& b : bound)
+      if (std::string(b.channel->key) == key) return key;
+  return "time";
+}
+
+// One cell into its channel; the channel that orders the rows (order_key) must not go back.
+void read_cell(const BoundColumn& b, const std::string& cell, int line, bool decimal_comma,
+               const std::string& file, const std::string& order_key, Recording& r) {
   if (b.channel->quantity == Quantity::Text) {
     r.event.push_back(cell);
     return;
   }
+  const std::string place = "row " + std::to_string(line) + ", column " + quoted_cell(b.header) +
+                            ": " + quoted_cell(cell);
   std::optional<double> v;
   if (b.channel->quantity == Quantity::Time && cell.find(':') != std::string::npos)
-    v = parse_clock_time(cell);
-  else if (const auto n = parse_number(cell))
+    v = parse_clock_time(with_decimal_point(cell, decimal_comma));
+  else if (const auto n = parse_number(with_decimal_point(cell, decimal_comma)))
     v = *n * b.factor;
   if (!v) fail(file, place + " is not a number");
   auto* values = target(r, b.channel->key);
-  if (b.channel->quantity == Quantity::Time && !values->empty() && *v < values->back())
-    fail(file,
-         place + " goes back in time (" + format_seconds(*v) + " after " +
-             format_seconds(values->back()) + ")",
-         "rows must be sorted by time");
+  if (b.channel->key == order_key && !values->empty() && *v < values->back()) {
+    if (b.channel->quantity == Quantity::Time)
+      fail(file,
+           place + " goes back in time (" + format_seconds(*v) + " after " +
+               format_seconds(values->back()) + ")",
+           "rows must be sorted by time");
+    fail(file, place + " is below the row before it (" + format_number(values->back()) + ")",
+         "a table without time must be sorted by its volume");
+  }
   values->push_back(*v);
 }
 
@@ -271,13 +317,25 @@ ColumnMap parse_column_map(const std::string& text) {
 Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& options) {
   const std::string file = csv.string();
   if (!std::filesystem::exists(csv)) fail(file, "cannot open the recording", "check the path");
-  const CsvTable table = read_csv_table(csv);
-  const std::vector<BoundColumn> bound = bind_columns(table.header, options, file);
+  if (std::filesystem::is_directory(csv)) fail(file, "is a folder, not a recording");
+  // Rows are converted as they are read: a long recording never exists as text cells.
+  std::vector<BoundColumn> bound;
+  bool decimal_comma = false;
+  std::string order_key;
   Recording r;
   r.source = file;
-  r.line = table.line;
-  for (std::size_t row = 0; row < table.row_count(); ++row)
-    for (const auto& b : bound) read_cell(b, table.rows[row][b.index], table.line[row], file, r);
+  read_csv_rows(
+      csv, CsvOptions{},
+      [&](const CsvHeader& header) {
+        bound = bind_columns(header.names, options, file);
+        decimal_comma = header.decimal_comma();
+        order_key = row_order_key(bound);
+      },
+      [&](const std::vector<std::string>& cells, int line) {
+        r.line.push_back(line);
+        for (const auto& b : bound)
+          read_cell(b, cells[b.index], line, decimal_comma, file, order_key, r);
+      });
   if (r.rows() < options.min_rows)
     fail(file, options.min_rows == 2
                    ? "fewer than two data rows"

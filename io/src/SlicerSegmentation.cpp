@@ -43,8 +43,9 @@ bool is_slicer_segmentation(const std::filesystem::path& path) {
   return name.size() > 9 && name.compare(name.size() - 9, 9, ".seg.nrrd") == 0;
 }
 
-std::vector<SegmentInfo> read_segments(const std::filesystem::path& path) {
-  const std::string file = path.string();
+namespace {
+
+itk::MetaDataDictionary header_of(const std::string& file) {
   itk::ImageIOBase::Pointer io =
       itk::ImageIOFactory::CreateImageIO(file.c_str(), itk::ImageIOFactory::FileModeEnum::ReadMode);
   if (!io) fail(file, "not a readable NRRD file");
@@ -54,7 +55,18 @@ std::vector<SegmentInfo> read_segments(const std::filesystem::path& path) {
   } catch (const itk::ExceptionObject&) {
     fail(file, "cannot read the segmentation header");
   }
-  const itk::MetaDataDictionary& dict = io->GetMetaDataDictionary();
+  return io->GetMetaDataDictionary();
+}
+
+}  // namespace
+
+bool lists_segments(const std::filesystem::path& path) {
+  return header_of(path.string()).HasKey("Segment0_Name");
+}
+
+std::vector<SegmentInfo> read_segments(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  const itk::MetaDataDictionary dict = header_of(file);
   std::vector<SegmentInfo> segments;
   for (int n = 0;; ++n) {
     const std::string prefix = "Segment" + std::to_string(n) + "_";

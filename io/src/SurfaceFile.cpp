@@ -10,6 +10,7 @@
 #include <vtkCellData.h>
 #include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
@@ -28,6 +29,7 @@
 #include <vtkXMLPolyDataWriter.h>
 
 #include "LowerCase.h"
+#include "PlyCheck.h"
 #include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
 #include "vesica/core/AtomicOutput.h"
@@ -50,6 +52,7 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path) {
   const std::string name = path.string();
   vtkSmartPointer<vtkAlgorithm> reader;
   if (ext == ".vtp") {
+    detail::check_vtk_xml_counts(path);
     auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     if (!xml->CanReadFile(name.c_str())) fail(name, "not a readable VTK XML polydata file");
     xml->SetFileName(name.c_str());
@@ -61,7 +64,7 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path) {
     stl->SetFileName(name.c_str());
     reader = stl;
   } else if (ext == ".ply") {
-    detail::check_ply_header(path);
+    detail::check_ply_file(path);
     auto ply = vtkSmartPointer<vtkPLYReader>::New();
     ply->SetFileName(name.c_str());
     reader = ply;
@@ -71,7 +74,7 @@ vtkSmartPointer<vtkPolyData> read_polydata(const std::filesystem::path& path) {
     reader = obj;
   }
   const auto errors = detail::watch_errors(reader);
-  reader->Update();
+  detail::update_reader(*reader, name);
   if (errors->any())
     fail(name, "cannot read the surface: " + detail::vtk_message_line(errors->message()));
   return vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
@@ -81,6 +84,29 @@ void require_millimetres(vtkPolyData* polydata, const std::string& origin) {
   auto* units = vtkStringArray::SafeDownCast(polydata->GetFieldData()->GetAbstractArray("units"));
   if (units && units->GetNumberOfValues() > 0 && units->GetValue(0) != "mm")
     fail(origin, "coordinates are in '" + units->GetValue(0) + "', expected mm");
+}
+
+// Every polygon's corners name existing points, and the points are finite: VTK's filters
+// index points by the ids a reader took from the file, without checking them.
+void require_valid_polygons(vtkPolyData* polydata, const std::string& origin) {
+  const vtkIdType points = polydata->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i) {
+    double p[3];
+    polydata->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      fail(origin, "point " + std::to_string(i) + " has a coordinate that is not finite");
+  }
+  vtkCellArray* polys = polydata->GetPolys();
+  vtkNew<vtkIdList> ids;
+  polys->InitTraversal();
+  for (vtkIdType c = 0; polys->GetNextCell(ids); ++c) {
+    if (ids->GetNumberOfIds() < 3)
+      fail(origin, "polygon " + std::to_string(c) + " has fewer than 3 corners");
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      if (ids->GetId(k) < 0 || ids->GetId(k) >= points)
+        fail(origin, "polygon " + std::to_string(c) + " names point " +
+                         std::to_string(ids->GetId(k)) + " of " + std::to_string(points));
+  }
 }
 
 int region_code(double value, const std::string& origin) {
@@ -129,36 +155,40 @@ std::string retag_note(const std::filesystem::path& path, const RegionsSidecar& 
          "triangle centroid";
 }
 
+// Errors name `target`, the file the user asked for, not the temporary written.
 template <class Writer>
-void run_writer(Writer* writer, vtkPolyData* poly, const std::filesystem::path& tmp) {
+void run_writer(Writer* writer, vtkPolyData* poly, const std::filesystem::path& tmp,
+                const std::filesystem::path& target) {
   writer->SetInputData(poly);
   writer->SetFileName(tmp.c_str());
   const auto errors = detail::watch_errors(writer);
-  if (!writer->Write() || errors->any())
-    fail(tmp.string(),
-         "VTK could not write the surface: " + detail::vtk_message_line(errors->message()));
+  if (!writer->Write() || errors->any() || writer->GetErrorCode() != vtkErrorCode::NoError)
+    fail(target.string(), "VTK could not write the surface: " +
+                              detail::vtk_write_error(*errors, writer->GetErrorCode()));
 }
 
 void write_polydata(vtkPolyData* poly, const std::string& ext, const SurfaceWriteOptions& options,
-                    const std::filesystem::path& tmp) {
+                    const std::filesystem::path& tmp, const std::filesystem::path& target) {
   if (ext == ".vtp") {
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetDataModeToBinary();
-    run_writer(writer.Get(), poly, tmp);
+    // Appended, not inline: VTK 9.1's inline binary mode frees unallocated memory when the
+    // disk fills during the write.
+    writer->SetDataModeToAppended();
+    run_writer(writer.Get(), poly, tmp, target);
   } else if (ext == ".stl") {
     vtkNew<vtkSTLWriter> writer;
     if (options.stl_ascii)
       writer->SetFileTypeToASCII();
     else
       writer->SetFileTypeToBinary();
-    run_writer(writer.Get(), poly, tmp);
+    run_writer(writer.Get(), poly, tmp, target);
   } else if (ext == ".ply") {
     vtkNew<vtkPLYWriter> writer;
     writer->SetFileTypeToBinary();
-    run_writer(writer.Get(), poly, tmp);
+    run_writer(writer.Get(), poly, tmp, target);
   } else {
     vtkNew<vtkOBJWriter> writer;
-    run_writer(writer.Get(), poly, tmp);
+    run_writer(writer.Get(), poly, tmp, target);
   }
 }
 
@@ -172,6 +202,7 @@ bool is_surface_file(const std::filesystem::path& path) {
 TaggedSurface surface_from_polydata(vtkPolyData* input, const std::string& origin) {
   if (!input || input->GetNumberOfPolys() == 0) fail(origin, "no surface polygons");
   require_millimetres(input, origin);
+  require_valid_polygons(input, origin);
   // Vertices, lines and strips are not wall; keep only polygons, then triangulate.
   vtkNew<vtkPolyData> polys;
   polys->SetPoints(input->GetPoints());
@@ -278,8 +309,9 @@ void write_surface_file(const TaggedSurface& surface, const std::filesystem::pat
   if (!is_surface_file(path))
     fail(path.string(), "unknown surface format", "use .vtp, .stl, .ply or .obj");
   const vtkSmartPointer<vtkPolyData> poly = surface_polydata(surface);
-  write_atomically(
-      path, [&](const std::filesystem::path& tmp) { write_polydata(poly, ext, options, tmp); });
+  write_atomically(path, [&](const std::filesystem::path& tmp) {
+    write_polydata(poly, ext, options, tmp, path);
+  });
   if (ext != ".vtp") write_regions_sidecar(surface, regions_sidecar_path(path));
 }
 

@@ -6,6 +6,7 @@
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
@@ -17,6 +18,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
@@ -88,8 +90,18 @@ const VtuArray* find(const std::vector<VtuArray>& arrays, const std::string& nam
   return nullptr;
 }
 
+// A cell array of the mesh file must have the width its name says; a "fiber1" of two
+// components or a "thickness_mm" of three is a broken file, not a missing array.
+const VtuArray* mesh_array(const VtuGrid& g, const char* name, int width, const std::string& file) {
+  const VtuArray* a = g.cell_array(name);
+  if (a && a->components != width)
+    fail(file, std::string("cell array ") + name + " has " + std::to_string(a->components) +
+                   " components, expected " + std::to_string(width));
+  return a;
+}
+
 Eigen::MatrixXd triangle_rows(const VtuArray* a, Eigen::Index triangles) {
-  if (!a || a->components != 3) return Eigen::MatrixXd(0, 3);
+  if (!a) return Eigen::MatrixXd(0, 3);
   Eigen::MatrixXd rows(triangles, 3);
   for (Eigen::Index t = 0; t < triangles; ++t)
     for (int k = 0; k < 3; ++k) rows(t, k) = a->values[static_cast<std::size_t>(3 * t + k)];
@@ -129,20 +141,21 @@ void write_vtu(const VtuGrid& g, const std::filesystem::path& path,
       writer->EncodeAppendedDataOff();  // raw bytes: no base64 pass
     }
     const auto errors = detail::watch_errors(writer);
-    if (writer->Write() != 1 || errors->any())
-      fail(path.string(),
-           "could not write the VTU file: " + detail::vtk_message_line(errors->message()));
+    if (writer->Write() != 1 || errors->any() || writer->GetErrorCode() != vtkErrorCode::NoError)
+      fail(path.string(), "could not write the VTU file: " +
+                              detail::vtk_write_error(*errors, writer->GetErrorCode()));
   });
 }
 
 VtuGrid read_vtu(const std::filesystem::path& path) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) fail(name, "file not found");
+  detail::check_vtk_xml_counts(path);
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   if (!reader->CanReadFile(name.c_str())) fail(name, "not a VTK XML unstructured grid");
   reader->SetFileName(name.c_str());
   const auto errors = detail::watch_errors(reader);
-  reader->Update();
+  detail::update_reader(*reader, name);
   if (errors->any())
     fail(name, "cannot read the VTU file: " + detail::vtk_message_line(errors->message()));
   vtkUnstructuredGrid* grid = reader->GetOutput();
@@ -217,28 +230,32 @@ void write_mesh_vtu(const VolumeMesh& mesh, const std::filesystem::path& path) {
 }
 
 VolumeMesh read_mesh_vtu(const std::filesystem::path& path) {
+  const std::string file = path.string();
   const VtuGrid g = read_vtu(path);
   const Eigen::Index m = g.triangles.rows();
   VolumeMesh mesh;
   mesh.nodes = g.points_mm;
   mesh.triangles = g.triangles;
   mesh.tets = g.tets;
-  const VtuArray* region = g.cell_array("region");
+  const VtuArray* region = mesh_array(g, "region", 1, file);
   mesh.tri_region = Eigen::VectorXi::Constant(m, static_cast<int>(Region::Wall));
   if (region)
-    for (Eigen::Index t = 0; t < m; ++t)
-      mesh.tri_region(t) = static_cast<int>(region->values[static_cast<std::size_t>(t)]);
-  if (const VtuArray* h = g.cell_array("thickness_mm"); h && h->components == 1) {
+    for (Eigen::Index t = 0; t < m; ++t) {
+      const double code = region->values[static_cast<std::size_t>(t)];
+      if (!(code >= 0 && code <= kUrineVolumeTag) || static_cast<int>(code) != code)
+        fail(file, "triangle " + std::to_string(t) + " has region " + std::to_string(code),
+             "codes are wall=1, outlet=2, inlet=3, fixed=4, support=5");
+      mesh.tri_region(t) = static_cast<int>(code);
+    }
+  if (const VtuArray* h = mesh_array(g, "thickness_mm", 1, file)) {
     mesh.thickness_mm.resize(m);
     for (Eigen::Index t = 0; t < m; ++t)
       mesh.thickness_mm(t) = h->values[static_cast<std::size_t>(t)];
   }
-  mesh.fiber1 = triangle_rows(g.cell_array("fiber1"), m);
-  mesh.fiber2 = triangle_rows(g.cell_array("fiber2"), m);
-  if (mesh.fiber1.rows() != mesh.fiber2.rows()) {
-    mesh.fiber1.resize(0, 3);
-    mesh.fiber2.resize(0, 3);
-  }
+  mesh.fiber1 = triangle_rows(mesh_array(g, "fiber1", 3, file), m);
+  mesh.fiber2 = triangle_rows(mesh_array(g, "fiber2", 3, file), m);
+  if (mesh.fiber1.rows() != mesh.fiber2.rows())
+    fail(file, "has one of the cell arrays fiber1 and fiber2 without the other");
   return mesh;
 }
 

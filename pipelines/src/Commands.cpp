@@ -9,20 +9,28 @@
 
 #include <CLI/CLI.hpp>
 
+#include "Joined.h"
+#include "RunnerTerminal.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/core/Version.h"
+#include "vesica/pipelines/AcceptEdits.h"
 #include "vesica/pipelines/ParameterReference.h"
 #include "vesica/pipelines/Plan.h"
 #include "vesica/pipelines/Runner.h"
+#include "vesica/pipelines/SignalRelay.h"
 #include "vesica/pipelines/SnakemakeExport.h"
 #include "vesica/pipelines/Staleness.h"
+#include "vesica/pipelines/StateFolder.h"
 #include "vesica/pipelines/StudyReport.h"
+#include "vesica/pipelines/WorkdirLock.h"
 
 namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
 namespace {
+
+using detail::joined;
 
 constexpr const char* kHelp = R"(vesica — CT to bladder simulation, driven by a pipeline file
 
@@ -32,12 +40,19 @@ Usage:
       --only STAGE    only this stage (repeatable; runs it if stale)
       --from STAGE    rerun this stage and everything downstream
       --force         run every selected stage, stale or not
+      --discard-edits STAGE  rerun STAGE although you edited its outputs (they are
+                      saved under WORKDIR/.vesica/backup/ first)
       --workdir DIR   outputs go here instead of the file's workdir
       -j N            run up to N independent stages at once
       -k, --keep-going  after a failure, still run the stages that do not depend on it
       --json          no progress; print the result as JSON
   vesica status FILE [--workdir DIR] [--json]
-                                       each stage: fresh, stale or missing, and why
+                                       each stage: fresh, stale, missing, edited (kept)
+                                       or failed, and why; exit 1 when any would run
+  vesica reset FILE STAGE... [--workdir DIR] [-j N] [--json]
+                                       regenerate edited outputs: run --discard-edits
+  vesica accept FILE STAGE... [--workdir DIR]
+                                       make the edited files the stages' own outputs
   vesica export --snakemake FILE [--workdir DIR] > Snakefile
                                        the same pipeline as a Snakemake workflow
   vesica parameters [TOOL] [--json]    every stage parameter: key, unit, default, range
@@ -46,6 +61,8 @@ Usage:
                                        vesica-phantom -o OUT_DIR args...
   vesica help | --version
 
+A file you edit in a workdir (a label map in Slicer, a surface in MeshLab, a mesh in
+Gmsh) is kept: its stage does not run again, the stages that read it do.
 Stage executables vesica-<tool> are looked up beside this program.
 See docs/pipeline-file.md for the file format and the staleness rules.
 )";
@@ -113,6 +130,14 @@ int parameters(int argc, char** argv) {
   return 0;
 }
 
+// "kept your edits: bladder.ply (surface); ..." and how to undo or adopt them.
+std::string kept_edits_line(const std::vector<std::string>& files, const Plan& plan) {
+  return "kept your edits: " + joined(files) +
+         "; `vesica reset` regenerates a stage's outputs (yours are saved in " +
+         (plan.workdir / state::kFolder / "backup").string() +
+         "), `vesica accept` makes yours its own";
+}
+
 int status(int argc, char** argv) {
   CLI::App app("Show which stages are fresh", "status");
   std::string file, workdir;
@@ -124,22 +149,31 @@ int status(int argc, char** argv) {
   Loaded l = load(file, workdir);
   if (l.exit_code) return l.exit_code;
   const auto st = assess(l.plan);
+  const bool any_to_run =
+      std::any_of(st.begin(), st.end(), [](const StageStatus& s) { return s.will_run(); });
   if (json) {
     nlohmann::json j = nlohmann::json::array();
-    for (std::size_t i = 0; i < st.size(); ++i)
-      j.push_back({{"stage", l.plan.stages[i].id},
-                   {"state", to_string(st[i].state)},
-                   {"reason", st[i].reason}});
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      nlohmann::json stage = {{"stage", l.plan.stages[i].id},
+                              {"state", to_string(st[i].state)},
+                              {"reason", st[i].reason}};
+      if (!st[i].edited.empty()) stage["edited"] = st[i].edited;
+      j.push_back(stage);
+    }
     std::cout << j.dump(2) << "\n";
-    return 0;
+    return any_to_run ? 1 : 0;
   }
   std::size_t width = 5;
   for (const auto& s : l.plan.stages) width = std::max(width, s.id.size());
-  std::printf("%-*s  %-7s  %s\n", static_cast<int>(width), "STAGE", "STATE", "REASON");
-  for (std::size_t i = 0; i < st.size(); ++i)
-    std::printf("%-*s  %-7s  %s\n", static_cast<int>(width), l.plan.stages[i].id.c_str(),
-                to_string(st[i].state), st[i].reason.empty() ? "-" : st[i].reason.c_str());
-  return 0;
+  std::printf("%-*s  %s\n", static_cast<int>(width), "STAGE", "STATE");
+  std::vector<std::string> kept;
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    std::printf("%-*s  %s\n", static_cast<int>(width), l.plan.stages[i].id.c_str(),
+                st[i].line().c_str());
+    for (const auto& f : st[i].edited) kept.push_back(f + " (" + l.plan.stages[i].id + ")");
+  }
+  if (!kept.empty()) std::printf("%s\n", kept_edits_line(kept, l.plan).c_str());
+  return any_to_run ? 1 : 0;
 }
 
 // A study with simulations gets its table and page after every run that changed something (or lost
@@ -159,31 +193,41 @@ bool update_study_outputs(const Plan& plan, const RunResult& r) {
   return true;
 }
 
-int run(int argc, char** argv) {
-  CLI::App app("Run the stale stages", "run");
-  std::string file, workdir;
-  bool json = false;
-  RunOptions options;
-  app.add_option("file", file, "Pipeline file")->required();
-  app.add_option("--only", options.only, "Only these stages");
-  app.add_option("--from", options.from, "Rerun from these stages on");
-  app.add_flag("--force", options.force, "Run every selected stage");
-  app.add_option("--workdir", workdir, "Outputs folder");
-  app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
-  app.add_flag("-k,--keep-going", options.keep_going,
-               "After a failure, run the stages that do not depend on it");
-  app.add_flag("--json", json, "Print the result as JSON, no progress");
-  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
-  Loaded l = load(file, workdir);
-  if (l.exit_code) return l.exit_code;
+// Runs the plan under the workdir's lock; shared by `run` and `reset`.
+int execute(const Loaded& l, RunOptions options, bool json) {
+  detail::RunnerTerminal terminal(!json && ::isatty(STDERR_FILENO));
+  // Stages show their progress only on a terminal; theirs is the runner's pipe, so the
+  // runner asks for it and draws it (vesica/core/Progress.h).
+  if (terminal.shows_progress()) ::setenv("VESICA_PROGRESS", "1", 1);
   options.capture = json;
-  if (!json)
-    options.progress = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
+  if (!json) {
+    options.progress = [&](const std::string& line) { terminal.line(line); };
+    options.progress_line = [&](const std::string& text) { terminal.progress(text); };
+  }
+  const WorkdirLock lock(l.plan.workdir, [&](long pid) {
+    if (!json)
+      terminal.line("vesica: waiting for PID " + std::to_string(pid) + ", which is working in " +
+                    l.plan.workdir.string() + " (" + state::lock_path() + ")");
+  });
   const RunResult r = run_plan(l.plan, options);
+  terminal.clear();
   if (update_study_outputs(l.plan, r) && !json)
-    std::fprintf(stderr, "vesica: study table and page: %s, %s\n",
-                 (l.plan.workdir / "study.csv").c_str(), (l.plan.workdir / "study.html").c_str());
+    terminal.line("vesica: study table and page: " + (l.plan.workdir / "study.csv").string() +
+                  ", " + (l.plan.workdir / "study.html").string());
   if (json) std::cout << r.to_json().dump(2) << "\n";
+  if (!json && !r.kept_files().empty())
+    terminal.line("vesica: " + kept_edits_line(r.kept_files(), l.plan));
+  if (r.interrupted_by) {
+    std::vector<std::string> stopped;
+    for (const auto& s : r.stages)
+      if (s.action == "interrupted") stopped.push_back(s.id);
+    if (!json)
+      terminal.line(std::string("vesica: interrupted by ") + signal_name(r.interrupted_by) + ": " +
+                    (stopped.empty() ? "no stage was running"
+                                     : joined(stopped) + " stopped and will run again") +
+                    "; " + std::to_string(r.ran().size()) + " stages finished before");
+    return 128 + r.interrupted_by;
+  }
   if (!r.ok) {
     const auto& failed = r.stages[static_cast<std::size_t>(l.plan.index_of(r.failed_stage))];
     std::fprintf(stderr, "vesica: stage '%s' failed (exit %d): %s\n", r.failed_stage.c_str(),
@@ -192,12 +236,89 @@ int run(int argc, char** argv) {
   }
   if (!json) {
     const std::size_t ran = r.ran().size();
+    const auto kept = static_cast<std::size_t>(
+        std::count_if(r.stages.begin(), r.stages.end(),
+                      [](const StageOutcome& s) { return s.action == "kept"; }));
     if (ran == 0)
-      std::fprintf(stderr, "vesica: nothing to do, %zu stages are fresh\n", r.stages.size());
+      terminal.line("vesica: nothing to do, " + std::to_string(r.stages.size() - kept) +
+                    " stages are fresh" +
+                    (kept ? ", " + std::to_string(kept) + " kept with your edits" : ""));
     else
-      std::fprintf(stderr, "vesica: %zu of %zu stages ran; outputs in %s\n", ran, r.stages.size(),
-                   l.plan.workdir.c_str());
+      terminal.line("vesica: " + std::to_string(ran) + " of " + std::to_string(r.stages.size()) +
+                    " stages ran; outputs in " + l.plan.workdir.string());
   }
+  return 0;
+}
+
+// What `run` and `reset` share: the file, the workdir, -j and --json.
+struct Execution {
+  std::string file, workdir;
+  bool json = false;
+  RunOptions options;
+
+  void add_to(CLI::App& app) {
+    app.add_option("file", file, "Pipeline file")->required();
+    app.add_option("--workdir", workdir, "Outputs folder");
+    app.add_option("-j,--jobs", options.jobs, "Stages run at once")->check(CLI::PositiveNumber);
+    app.add_flag("--json", json, "Print the result as JSON, no progress");
+  }
+  int operator()() const {
+    const Loaded l = load(file, workdir);
+    return l.exit_code ? l.exit_code : execute(l, options, json);
+  }
+};
+
+int run(int argc, char** argv) {
+  CLI::App app("Run the stale stages", "run");
+  Execution e;
+  e.add_to(app);
+  app.add_option("--only", e.options.only, "Only these stages");
+  app.add_option("--from", e.options.from, "Rerun from these stages on");
+  app.add_flag("--force", e.options.force, "Run every selected stage");
+  app.add_option("--discard-edits", e.options.discard_edits,
+                 "Rerun these stages although their outputs were edited (saved first)");
+  app.add_flag("-k,--keep-going", e.options.keep_going,
+               "After a failure, run the stages that do not depend on it");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  return e();
+}
+
+int reset(int argc, char** argv) {
+  CLI::App app("Regenerate the outputs of stages whose outputs were edited", "reset");
+  Execution e;
+  e.add_to(app);
+  app.add_option("stages", e.options.discard_edits, "Stages to regenerate")->required();
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  return e();
+}
+
+int accept(int argc, char** argv) {
+  CLI::App app("Make the edited outputs of stages their own", "accept");
+  std::string file, workdir;
+  std::vector<std::string> stages;
+  app.add_option("file", file, "Pipeline file")->required();
+  app.add_option("stages", stages, "Stages whose edited outputs to accept")->required();
+  app.add_option("--workdir", workdir, "Outputs folder");
+  if (int rc = parse(app, argc, argv); rc >= 0) return rc;
+  Loaded l = load(file, workdir);
+  if (l.exit_code) return l.exit_code;
+  const WorkdirLock lock(l.plan.workdir, [&](long pid) {
+    std::fprintf(stderr, "vesica: waiting for PID %ld, which is working in %s\n", pid,
+                 l.plan.workdir.c_str());
+  });
+  for (const auto& name : stages)
+    for (std::size_t i : l.plan.named(name)) {
+      const std::string& id = l.plan.stages[i].id;
+      const std::vector<std::string> files = accept_edits(l.plan, i);
+      if (files.empty())
+        std::fprintf(stderr, "vesica: %s: nothing to accept, its outputs are as it wrote them\n",
+                     id.c_str());
+      else
+        std::fprintf(stderr,
+                     "vesica: %s: %s accepted as its output; the stages that read it run next "
+                     "time\n",
+                     id.c_str(), joined(files).c_str());
+    }
   return 0;
 }
 
@@ -217,7 +338,7 @@ int export_workflow(int argc, char** argv) {
 
 // Replaces this process with vesica-phantom, so its output and exit code are the user's.
 int phantom(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]).rfind("-", 0) == 0) {
+  if (argc < 2 || argv[1][0] == '-') {
     std::fputs("usage: vesica phantom OUT_DIR [vesica-phantom options...]\n", stderr);
     return 2;
   }
@@ -225,6 +346,7 @@ int phantom(int argc, char** argv) {
   std::vector<std::string> args = {exe.string(), "-o", argv[1]};
   for (int i = 2; i < argc; ++i) args.emplace_back(argv[i]);
   std::vector<char*> c_args;
+  c_args.reserve(args.size() + 1);
   for (auto& a : args) c_args.push_back(a.data());
   c_args.push_back(nullptr);
   ::execv(c_args[0], c_args.data());
@@ -236,8 +358,8 @@ int phantom(int argc, char** argv) {
 }  // namespace
 
 int vesica_main(int argc, char** argv) {
-  const std::vector<std::string> commands = {"validate", "run",  "status",    "export",
-                                             "phantom",  "help", "parameters"};
+  const std::vector<std::string> commands = {"validate", "run",     "status", "reset",     "accept",
+                                             "export",   "phantom", "help",   "parameters"};
   if (argc < 2) {
     std::fputs(kHelp, stderr);
     return 2;
@@ -255,6 +377,8 @@ int vesica_main(int argc, char** argv) {
     if (command == "validate") return validate(argc - 1, argv + 1);
     if (command == "run") return run(argc - 1, argv + 1);
     if (command == "status") return status(argc - 1, argv + 1);
+    if (command == "reset") return reset(argc - 1, argv + 1);
+    if (command == "accept") return accept(argc - 1, argv + 1);
     if (command == "export") return export_workflow(argc - 1, argv + 1);
     if (command == "phantom") return phantom(argc - 1, argv + 1);
     if (command == "parameters") return parameters(argc - 1, argv + 1);

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <tuple>
 
+#include "vesica/core/Error.h"
+
 namespace vesica::pipelines {
 
 void Diagnostics::add(SourcePos pos, std::string message) {
-  items_.push_back({pos, std::move(message)});
+  // One line each, however long or multi-line the key or value a message quotes.
+  items_.push_back({pos, single_line(message)});
 }
 
 std::string Diagnostics::format(const std::string& file) const {

@@ -75,7 +75,7 @@ std::string tool_section(const ParameterTable& table) {
 std::string parameter_reference_markdown(const std::string& only) {
   const std::vector<std::string> tools = ordered_tools(only);
   std::string md = kIntroduction;
-  if (only.empty()) {
+  if (only.empty() && !tools_without_tables().empty()) {
     std::string missing;
     for (const auto& t : tools_without_tables())
       missing += (missing.empty() ? "`" : ", `") + t + "`";

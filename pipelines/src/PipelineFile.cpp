@@ -15,7 +15,7 @@ namespace {
 const std::vector<std::string> kTopKeys = {"pipeline", "workdir", "inputs", "stages", "study"};
 const std::vector<std::string> kStageKeys = {"tool",   "input",    "inputs", "output",
                                              "report", "manifest", "params"};
-const std::vector<std::string> kStudyKeys = {"matrix", "variants"};
+const std::vector<std::string> kStudyKeys = {"matrix", "variants", "max_runs"};
 
 SourcePos pos_of(const YAML::Node& node) {
   const YAML::Mark m = node.Mark();
@@ -52,7 +52,8 @@ class Reader {
       return spec_;
     }
     for (const auto& kv : root) {
-      const std::string key = kv.first.as<std::string>();
+      std::string key;
+      if (!key_text(kv.first, key)) continue;
       const YAML::Node& v = kv.second;
       if (key == "pipeline") {
         if (scalar(v, "pipeline")) spec_.name = v.as<std::string>();
@@ -82,6 +83,18 @@ class Reader {
     d_.add(pos_of(key_node), "unknown " + what + " '" + key + "'" + did_you_mean(key, known));
   }
 
+  // A map key as text. A list or a map used as a key is reported at its place (yaml-cpp
+  // would throw a conversion error that names neither the file nor the line).
+  bool key_text(const YAML::Node& key_node, std::string& key) {
+    if (key_node.IsScalar()) {
+      key = key_node.Scalar();
+      return true;
+    }
+    d_.add(pos_of(key_node),
+           std::string("a key must be a plain name, found ") + type_name(key_node));
+    return false;
+  }
+
   bool scalar(const YAML::Node& v, const std::string& what) {
     if (v.IsScalar()) return true;
     d_.add(pos_of(v), "'" + what + "' must be a single value, found " + type_name(v));
@@ -96,17 +109,18 @@ class Reader {
 
   void read_externals(const YAML::Node& v) {
     if (!map(v, "inputs")) return;
-    for (const auto& kv : v)
-      if (scalar(kv.second, "inputs." + kv.first.as<std::string>()))
-        spec_.externals.push_back(
-            {kv.first.as<std::string>(), kv.second.as<std::string>(), pos_of(kv.second)});
+    for (const auto& kv : v) {
+      std::string name;
+      if (key_text(kv.first, name) && scalar(kv.second, "inputs." + name))
+        spec_.externals.push_back({name, kv.second.as<std::string>(), pos_of(kv.second)});
+    }
   }
 
   void read_stages(const YAML::Node& v) {
     if (!map(v, "stages")) return;
     for (const auto& kv : v) {
       StageSpec s;
-      s.name = kv.first.as<std::string>();
+      if (!key_text(kv.first, s.name)) continue;
       s.pos = pos_of(kv.first);
       s.tool = s.name;
       s.tool_pos = s.pos;
@@ -120,7 +134,8 @@ class Reader {
 
   void read_stage(const YAML::Node& v, StageSpec& s) {
     for (const auto& kv : v) {
-      const std::string key = kv.first.as<std::string>();
+      std::string key;
+      if (!key_text(kv.first, key)) continue;
       const YAML::Node& x = kv.second;
       const std::string where = s.name + "." + key;
       if (key == "tool") {
@@ -132,10 +147,12 @@ class Reader {
         read_positional(x, where, s);
       } else if (key == "inputs") {
         if (map(x, where))
-          for (const auto& in : x)
-            if (scalar(in.second, where + "." + in.first.as<std::string>()))
-              s.named.push_back(
-                  {in.first.as<std::string>(), {in.second.as<std::string>(), pos_of(in.second)}});
+          for (const auto& in : x) {
+            std::string name;
+            if (key_text(in.first, name) &&
+                scalar(in.second, std::string(where).append(".").append(name)))
+              s.named.push_back({name, {in.second.as<std::string>(), pos_of(in.second)}});
+          }
       } else if (key == "output" || key == "report" || key == "manifest") {
         if (scalar(x, where)) {
           PathRef& target = key == "output" ? s.output : key == "report" ? s.report : s.manifest;
@@ -145,7 +162,9 @@ class Reader {
         if (map(x, where))
           for (const auto& p : x) {
             Param param;
-            if (read_param(p.first.as<std::string>(), pos_of(p.first), p.second, where, param))
+            std::string name;
+            if (key_text(p.first, name) &&
+                read_param(name, pos_of(p.first), p.second, where, param))
               s.params.push_back(param);
           }
       } else {
@@ -187,7 +206,7 @@ class Reader {
     }
     if (x.IsSequence()) {
       for (const auto& item : x) {
-        if (!scalar(item, where + "." + key)) return false;
+        if (!scalar(item, std::string(where).append(".").append(key))) return false;
         if (!param.value.empty()) param.value += ",";
         param.value += item.as<std::string>();
       }
@@ -200,7 +219,8 @@ class Reader {
 
   // "stage.param" -> (stage, param); false (and a diagnostic) when malformed.
   bool split_stage_param(const YAML::Node& key_node, std::string& stage, std::string& param) {
-    const std::string key = key_node.as<std::string>();
+    std::string key;
+    if (!key_text(key_node, key)) return false;
     const auto dot = key.find('.');
     if (dot == std::string::npos || dot == 0 || dot + 1 == key.size()) {
       d_.add(pos_of(key_node), "study key '" + key + "' must be written stage.param");
@@ -215,15 +235,29 @@ class Reader {
     if (!map(v, "study")) return;
     spec_.study.pos = pos_of(v);
     for (const auto& kv : v) {
-      const std::string key = kv.first.as<std::string>();
+      std::string key;
+      if (!key_text(kv.first, key)) continue;
       if (key == "matrix") {
         read_matrix(kv.second);
       } else if (key == "variants") {
         read_variants(kv.second);
+      } else if (key == "max_runs") {
+        read_max_runs(kv.second);
       } else {
         unknown(kv.first, key, kStudyKeys, "study key");
       }
     }
+  }
+
+  void read_max_runs(const YAML::Node& v) {
+    spec_.study.max_runs_pos = pos_of(v);
+    try {
+      if (v.IsScalar()) spec_.study.max_runs = v.as<long long>();
+    } catch (const YAML::Exception&) {
+      spec_.study.max_runs = 0;
+    }
+    if (spec_.study.max_runs <= 0)
+      d_.add(pos_of(v), "'study.max_runs' must be a whole number of runs above 0");
   }
 
   void read_matrix(const YAML::Node& v) {
@@ -251,7 +285,7 @@ class Reader {
     if (!map(v, "study.variants")) return;
     for (const auto& kv : v) {
       Variant variant;
-      variant.name = kv.first.as<std::string>();
+      if (!key_text(kv.first, variant.name)) continue;
       variant.pos = pos_of(kv.first);
       if (variant.name.find_first_of("/@ ") != std::string::npos)
         d_.add(variant.pos,
@@ -277,23 +311,25 @@ class Reader {
 }  // namespace
 
 const StageSpec* PipelineSpec::find_stage(const std::string& stage_name) const {
-  for (const auto& s : stages)
-    if (s.name == stage_name) return &s;
-  return nullptr;
+  // Stages are only ever appended, so the index is complete when it has every stage.
+  for (; indexed_ < stages.size(); ++indexed_)
+    stage_index_.emplace(stages[indexed_].name, indexed_);
+  const auto it = stage_index_.find(stage_name);
+  return it == stage_index_.end() ? nullptr : &stages[it->second];
 }
 
 PipelineSpec parse_pipeline_text(const std::string& text, const fs::path& file,
                                  Diagnostics& diagnostics) {
-  YAML::Node root;
   try {
-    root = YAML::Load(text);
+    return Reader(file, diagnostics).read(YAML::Load(text));
   } catch (const YAML::ParserException& e) {
     diagnostics.add(pos_of(e.mark), "malformed YAML: " + e.msg);
-    PipelineSpec empty;
-    empty.file = file;
-    return empty;
+  } catch (const YAML::Exception& e) {  // what the reader's checks did not foresee
+    diagnostics.add(pos_of(e.mark), "malformed pipeline file: " + e.msg);
   }
-  return Reader(file, diagnostics).read(root);
+  PipelineSpec empty;
+  empty.file = file;
+  return empty;
 }
 
 PipelineSpec load_pipeline_file(const fs::path& file, Diagnostics& diagnostics) {

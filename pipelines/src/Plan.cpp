@@ -3,12 +3,15 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <functional>
 #include <map>
 #include <set>
+#include <unordered_map>
 
+#include "vesica/core/Error.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/ParameterCheck.h"
+#include "vesica/pipelines/PathIndex.h"
+#include "vesica/pipelines/StateFolder.h"
 #include "vesica/pipelines/StudyExpansion.h"
 
 namespace fs = std::filesystem;
@@ -35,12 +38,6 @@ std::string normal_path(const std::string& path) {
 
 namespace {
 
-bool inside_or_equal(const std::string& path, const std::string& folder) {
-  return path == folder ||
-         (path.size() > folder.size() && path.compare(0, folder.size(), folder) == 0 &&
-          path[folder.size()] == '/');
-}
-
 std::string dashed(std::string key) {
   std::replace(key.begin(), key.end(), '_', '-');
   return key;
@@ -56,7 +53,8 @@ struct BaseStage {
   std::vector<std::string> positional;
   std::vector<std::pair<std::string, std::string>> named;
   std::string output, report, manifest;
-  std::vector<std::size_t> deps;  // indices into the base list
+  bool default_report = false, default_manifest = false;  // in .vesica/, named by the id
+  std::vector<std::size_t> deps;                          // indices into the base list
   std::vector<long> producer_of_positional, producer_of_named;
 };
 
@@ -83,6 +81,7 @@ class Planner {
     resolve_stages();
     find_dependencies();
     check_duplicate_outputs();
+    check_output_places();
     if (!d_.empty()) return plan_;
     const auto order = topological_order();
     if (order.empty()) return plan_;
@@ -127,15 +126,26 @@ class Planner {
   }
 
   std::string own_path(const PathRef& ref, const std::string& what, const StageSpec& s) {
-    const std::string p = normal_path(ref.text);
+    std::string p = normal_path(ref.text);
     if (fs::path(p).is_absolute() || p == ".." || p.compare(0, 3, "../") == 0)
       d_.add(ref.pos, "the " + what + " of stage '" + s.name +
                           "' must stay inside the workdir: " + ref.text);
+    else if (what == "output" && state::is_state_path(p))
+      d_.add(ref.pos, "the output of stage '" + s.name + "' may not be inside " + state::kFolder +
+                          "/, vesica's own folder: " + ref.text);
     return p;
   }
 
+  bool known_tool(const std::string& tool) {
+    const auto it = known_tools_.find(tool);
+    if (it != known_tools_.end()) return it->second;
+    const auto& builtin = builtin_tools();
+    const bool known = std::count(builtin.begin(), builtin.end(), tool) > 0 ||
+                       fs::exists(options_.bin_dir / ("vesica-" + tool));
+    return known_tools_[tool] = known;
+  }
+
   void resolve_stages() {
-    std::vector<std::string> tools = builtin_tools();
     for (const auto& s : spec_.stages) {
       BaseStage b;
       b.spec = &s;
@@ -143,35 +153,40 @@ class Planner {
       for (const auto& [key, in] : s.named) b.named.push_back({key, resolve(in)});
       if (!s.output.text.empty()) {
         b.output = own_path(s.output, "output", s);
-        const fs::path dir = fs::path(b.output).parent_path();
-        b.report = s.report.text.empty() ? normal_path((dir / (s.name + ".json")).string())
-                                         : own_path(s.report, "report", s);
-        b.manifest = s.manifest.text.empty()
-                         ? normal_path((dir / (s.name + ".manifest.json")).string())
-                         : own_path(s.manifest, "manifest", s);
+        b.default_report = s.report.text.empty();
+        b.default_manifest = s.manifest.text.empty();
+        b.report = b.default_report ? state::report_path(s.name) : own_path(s.report, "report", s);
+        b.manifest =
+            b.default_manifest ? state::manifest_path(s.name) : own_path(s.manifest, "manifest", s);
+        outputs_.add(b.output, static_cast<long>(base_.size()));
+        reports_.emplace(b.report, static_cast<long>(base_.size()));
       }
-      const bool known = std::count(tools.begin(), tools.end(), s.tool) > 0 ||
-                         fs::exists(options_.bin_dir / ("vesica-" + s.tool));
-      if (!known)
+      if (!known_tool(s.tool))
         d_.add(s.tool_pos, "unknown tool '" + s.tool + "' for stage '" + s.name + "'" +
-                               did_you_mean(s.tool, tools));
+                               did_you_mean(s.tool, builtin_tools()));
       base_.push_back(std::move(b));
     }
   }
 
+  // The stage whose output is or holds `path`, or whose report it is; -1 for none.
   long base_producer(const std::string& path) const {
-    for (std::size_t i = 0; i < base_.size(); ++i)
-      if (!base_[i].output.empty() &&
-          (inside_or_equal(path, base_[i].output) || path == base_[i].report))
-        return static_cast<long>(i);
-    return -1;
+    const long holder = outputs_.holder_of(path);
+    if (holder >= 0) return holder;
+    const auto report = reports_.find(path);
+    return report == reports_.end() ? -1 : report->second;
   }
 
   // `external`: written as ${inputs.NAME}, whose existence was checked with the inputs.
-  long link(BaseStage& b, const std::string& path, const PathRef& ref) {
+  long link(std::size_t self, const std::string& path, const PathRef& ref) {
+    BaseStage& b = base_[self];
     const SourcePos& pos = ref.pos;
     const bool external = ref.text.find("${") != std::string::npos;
     const long producer = base_producer(path);
+    if (producer == static_cast<long>(self)) {
+      d_.add(pos, "input '" + path + "' of stage '" + b.spec->name + "' is its own output '" +
+                      b.output + "': a stage would replace what it reads");
+      return -1;
+    }
     if (producer >= 0) {
       if (std::count(b.deps.begin(), b.deps.end(), producer) == 0)
         b.deps.push_back(static_cast<std::size_t>(producer));
@@ -184,75 +199,140 @@ class Planner {
   }
 
   void find_dependencies() {
-    for (auto& b : base_) {
+    for (std::size_t i = 0; i < base_.size(); ++i) {
+      BaseStage& b = base_[i];
       for (std::size_t k = 0; k < b.positional.size(); ++k)
-        b.producer_of_positional.push_back(link(b, b.positional[k], b.spec->positional[k]));
+        b.producer_of_positional.push_back(link(i, b.positional[k], b.spec->positional[k]));
       for (std::size_t k = 0; k < b.named.size(); ++k)
-        b.producer_of_named.push_back(link(b, b.named[k].second, b.spec->named[k].second));
+        b.producer_of_named.push_back(link(i, b.named[k].second, b.spec->named[k].second));
     }
   }
 
+  struct Written {
+    std::string path;
+    const StageSpec* stage;
+    SourcePos pos;
+  };
+
+  // The paths a stage writes: output, report, manifest, with the line each comes from.
+  static std::vector<Written> written_by(const BaseStage& b) {
+    const StageSpec& s = *b.spec;
+    return {{b.output, &s, s.output.pos},
+            {b.report, &s, b.default_report ? s.output.pos : s.report.pos},
+            {b.manifest, &s, b.default_manifest ? s.output.pos : s.manifest.pos}};
+  }
+
   void check_duplicate_outputs() {
-    struct Written {
-      std::string path;
-      const StageSpec* stage;
-      SourcePos pos;
-    };
     std::vector<Written> written;
+    PathIndex index;  // path -> index into `written`
     for (const auto& b : base_) {
       if (b.output.empty()) continue;
-      const StageSpec& s = *b.spec;
-      const Written mine[] = {
-          {b.output, &s, s.output.pos},
-          {b.report, &s, s.report.text.empty() ? s.output.pos : s.report.pos},
-          {b.manifest, &s, s.manifest.text.empty() ? s.output.pos : s.manifest.pos}};
-      for (const auto& w : mine) {
-        for (const auto& other : written)
-          if (inside_or_equal(w.path, other.path) || inside_or_equal(other.path, w.path)) {
-            d_.add(w.pos, "output '" + w.path + "' of stage '" + s.name + "' collides with '" +
-                              other.path + "' of stage '" + other.stage->name + "' (" +
-                              loc(other.pos) + ")");
-          }
+      for (const auto& w : written_by(b)) {
+        if (w.path == ".") continue;  // the workdir itself: check_output_places says so
+        long other = index.holder_of(w.path);
+        if (other < 0) other = index.inside(w.path).second;
+        if (other >= 0) {
+          const Written& o = written[static_cast<std::size_t>(other)];
+          d_.add(w.pos, "output '" + w.path + "' of stage '" + w.stage->name + "' collides with '" +
+                            o.path + "' of stage '" + o.stage->name + "' (" + loc(o.pos) + ")");
+        }
+        index.add(w.path, static_cast<long>(written.size()));
         written.push_back(w);
       }
     }
   }
 
-  // Kahn's algorithm in file order; on a cycle reports it and returns nothing.
+  // What a written path would replace that is not vesica's to replace (a stage's output
+  // replaces what is at its place): the workdir, the pipeline file, an external input, or a
+  // folder holding one of them. (An input inside an output is that stage's product, and a
+  // stage reading its own output is reported with its inputs.)
+  std::string replaces_what(const std::string& path) const {
+    if (path == ".") return "is the workdir";
+    const std::string file = normal_path(plan_.file.lexically_relative(plan_.workdir).string());
+    if (!file.empty() && file.compare(0, 2, "..") != 0 && inside_or_equal(file, path))
+      return (file == path ? "is" : "holds") + std::string(" the pipeline file ") + file;
+    for (const auto& [name, abs] : externals_) {
+      const std::string rel = normal_path(abs.lexically_relative(plan_.workdir).string());
+      if (rel.empty() || rel.compare(0, 2, "..") == 0 || !inside_or_equal(rel, path)) continue;
+      std::string what = rel == path ? "is" : "holds";
+      return what.append(" the external input '")
+          .append(name)
+          .append("' (")
+          .append(rel)
+          .append(")");
+    }
+    return "";
+  }
+
+  void check_output_places() {
+    for (const auto& b : base_) {
+      if (b.output.empty()) continue;
+      for (const auto& w : written_by(b)) {
+        const std::string what = replaces_what(w.path);
+        if (!what.empty())
+          d_.add(w.pos, "output '" + w.path + "' of stage '" + w.stage->name + "' " + what +
+                            "; vesica replaces what is at an output's place, so it must be a "
+                            "file or folder of its own");
+      }
+    }
+  }
+
+  // Depth-first in file order, iterative so that a long chain of stages cannot exhaust the
+  // call stack; on a cycle reports it and returns nothing.
   std::vector<std::size_t> topological_order() {
     const std::size_t n = base_.size();
-    std::vector<int> state(n, 0);  // 0 new, 1 on stack, 2 done
-    std::vector<std::size_t> order, stack;
-    std::function<bool(std::size_t)> visit = [&](std::size_t i) {
-      if (state[i] == 2) return true;
-      if (state[i] == 1) {
-        std::string cycle;
-        auto from = std::find(stack.begin(), stack.end(), i);
-        for (auto it = from; it != stack.end(); ++it) cycle += base_[*it].spec->name + " -> ";
-        d_.add(base_[i].spec->pos, "stages form a cycle: " + cycle + base_[i].spec->name);
-        return false;
+    std::vector<int> state(n, 0);  // 0 new, 1 on the path, 2 done
+    std::vector<std::size_t> order;
+    std::vector<std::pair<std::size_t, std::size_t>> path;  // (stage, next dependency)
+    order.reserve(n);
+    for (std::size_t root = 0; root < n; ++root) {
+      if (state[root] != 0) continue;
+      state[root] = 1;
+      path.push_back({root, 0});
+      while (!path.empty()) {
+        const std::size_t i = path.back().first;
+        if (path.back().second == base_[i].deps.size()) {
+          state[i] = 2;
+          order.push_back(i);
+          path.pop_back();
+          continue;
+        }
+        const std::size_t d = base_[i].deps[path.back().second++];
+        if (state[d] == 1) {
+          report_cycle(path, d);
+          return {};
+        }
+        if (state[d] == 0) {
+          state[d] = 1;
+          path.push_back({d, 0});
+        }
       }
-      state[i] = 1;
-      stack.push_back(i);
-      for (std::size_t d : base_[i].deps)
-        if (!visit(d)) return false;
-      stack.pop_back();
-      state[i] = 2;
-      order.push_back(i);
-      return true;
-    };
-    for (std::size_t i = 0; i < n; ++i)
-      if (!visit(i)) return {};
+    }
     return order;
   }
 
+  void report_cycle(const std::vector<std::pair<std::size_t, std::size_t>>& path, std::size_t d) {
+    std::string cycle;
+    auto from = std::find_if(path.begin(), path.end(), [&](const auto& p) { return p.first == d; });
+    for (auto it = from; it != path.end(); ++it) cycle += base_[it->first].spec->name + " -> ";
+    d_.add(base_[d].spec->pos, "stages form a cycle: " + cycle + base_[d].spec->name);
+  }
+
   void check_study() {
-    std::vector<std::string> names;
-    for (const auto& s : spec_.stages) names.push_back(s.name);
     auto check = [&](const std::string& stage, const SourcePos& pos) {
-      if (!spec_.find_stage(stage))
-        d_.add(pos, "study names unknown stage '" + stage + "'" + did_you_mean(stage, names));
+      if (spec_.find_stage(stage)) return;
+      std::vector<std::string> names;
+      for (const auto& s : spec_.stages) names.push_back(s.name);
+      d_.add(pos, "study names unknown stage '" + stage + "'" + did_you_mean(stage, names));
     };
+    const long long runs = study_run_count(spec_.study);
+    if (runs > spec_.study.max_runs)
+      d_.add(
+          spec_.study.pos,
+          "the study expands to " +
+              (runs == kTooManyRuns ? "more than " + std::to_string(runs) : std::to_string(runs)) +
+              " runs, more than study.max_runs (" + std::to_string(spec_.study.max_runs) +
+              "): set max_runs if you mean it");
     for (const auto& axis : spec_.study.matrix) check(axis.stage, axis.pos);
     std::set<std::string> seen;
     for (const auto& v : spec_.study.variants) {
@@ -296,8 +376,8 @@ class Planner {
     p.tool = s.tool;
     p.executable = options_.bin_dir / ("vesica-" + s.tool);
     p.output = prefix + b.output;
-    p.report = prefix + b.report;
-    p.manifest = prefix + b.manifest;
+    p.report = b.default_report ? state::report_path(p.id) : prefix + b.report;
+    p.manifest = b.default_manifest ? state::manifest_path(p.id) : prefix + b.manifest;
     auto it = run.overrides.find(s.name);
     p.params = it == run.overrides.end() ? s.params : apply_overrides(s.params, it->second);
     for (std::size_t k = 0; k < b.positional.size(); ++k) {
@@ -326,6 +406,9 @@ class Planner {
   Plan plan_;
   std::map<std::string, fs::path> externals_;
   std::vector<BaseStage> base_;
+  PathIndex outputs_;                              // output -> base index
+  std::unordered_map<std::string, long> reports_;  // report -> base index
+  std::map<std::string, bool> known_tools_;
 };
 
 }  // namespace
@@ -336,11 +419,32 @@ long Plan::index_of(const std::string& id) const {
   return -1;
 }
 
-long Plan::producer_of(const std::string& path) const {
-  const std::string p = normal_path(path);
+std::vector<std::size_t> Plan::named(const std::string& name) const {
+  std::vector<std::size_t> out;
   for (std::size_t i = 0; i < stages.size(); ++i)
-    if (inside_or_equal(p, stages[i].output) || p == stages[i].report) return static_cast<long>(i);
-  return -1;
+    if (stages[i].id == name || stages[i].stage == name) out.push_back(i);
+  if (out.empty()) {
+    std::vector<std::string> ids;
+    for (const auto& s : stages) ids.push_back(s.id);
+    usage_error("no stage named '" + name + "'" + did_you_mean(name, ids));
+  }
+  return out;
+}
+
+long Plan::producer_of(const std::string& path) const {
+  if (indexed_ != stages.size()) {
+    producers_ = std::make_shared<Producers>();
+    for (std::size_t i = 0; i < stages.size(); ++i) {
+      producers_->outputs.add(stages[i].output, static_cast<long>(i));
+      producers_->reports.emplace(stages[i].report, static_cast<long>(i));
+    }
+    indexed_ = stages.size();
+  }
+  const std::string p = normal_path(path);
+  const long holder = producers_->outputs.holder_of(p);
+  if (holder >= 0) return holder;
+  const auto report = producers_->reports.find(p);
+  return report == producers_->reports.end() ? -1 : report->second;
 }
 
 std::vector<std::size_t> Plan::downstream_of(std::size_t index) const {

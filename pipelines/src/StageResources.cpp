@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "vesica/phantom/PhantomParameters.h"
 #include "vesica/pipelines/StageTables.h"
 
 namespace fs = std::filesystem;
@@ -73,24 +74,29 @@ bool given(const PlannedStage& s, const std::string& key) {
   return p && p->kind == Param::Kind::Value && !p->value.empty();
 }
 
-// "400,400,240" -> their product, or `fallback` unless all three are numbers.
-double product_of_list(const PlannedStage& s, const std::string& key, double fallback) {
-  const Param* p = find_param(s, key);
-  if (!p || p->kind != Param::Kind::Value) return fallback;
-  double product = 1.0;
-  int count = 0;
-  std::size_t at = 0;
-  try {
-    while (at <= p->value.size()) {
-      const std::size_t comma = std::min(p->value.find(',', at), p->value.size());
-      product *= std::stod(p->value.substr(at, comma - at));
-      ++count;
-      at = comma + 1;
+// The stage's params assigned to `table`, which is bound to settings holding the stage's
+// own defaults: what the stage will run with. A value the table refuses leaves the
+// default (`vesica validate` reports it).
+void apply_params(const PlannedStage& s, ParameterTable& table) {
+  for (const Param& p : s.params)
+    for (Parameter& entry : table.entries()) {
+      if (entry.name != p.key) continue;
+      try {
+        if (p.kind == Param::Kind::Value)
+          entry.assign(p.value);
+        else if (entry.kind == Parameter::Kind::Flag)
+          entry.assign(p.kind == Param::Kind::Flag ? "true" : "false");
+      } catch (const ParameterValueError&) {
+      }
     }
-  } catch (const std::exception&) {
-    return fallback;
-  }
-  return count == 3 ? product : fallback;
+}
+
+// The phantom a phantom stage makes.
+segment::PhantomSpec phantom_of(const PlannedStage& s) {
+  phantom::PhantomSettings settings;
+  ParameterTable table = phantom::parameter_table(settings);
+  apply_params(s, table);
+  return phantom::phantom_spec(settings);
 }
 
 // ---- where the sizes come from ----
@@ -127,11 +133,8 @@ std::string count(double n) {
 // Voxels of the image a segmentation reads: the phantom's grid, else the input's bytes
 // (16-bit voxels; a .gz compresses a CT about fourfold), else a CT of unknown size.
 double image_voxels(const Plan& plan, std::size_t index) {
-  if (const long ph = nearest_upstream(plan, index, "phantom"); ph >= 0) {
-    const PlannedStage& p = plan.stages[static_cast<std::size_t>(ph)];
-    const double spacing = number(p, "spacing_mm", 2.0);
-    return product_of_list(p, "fov_mm", 400.0 * 400.0 * 240.0) / (spacing * spacing * spacing);
-  }
+  if (const long ph = nearest_upstream(plan, index, "phantom"); ph >= 0)
+    return segment::phantom_voxel_count(phantom_of(plan.stages[static_cast<std::size_t>(ph)]));
   const long seg = nearest_upstream(plan, index, "segment");
   if (seg < 0 || plan.stages[static_cast<std::size_t>(seg)].inputs.empty()) return kCtVoxels;
   const fs::path input = plan.in_workdir(plan.stages[static_cast<std::size_t>(seg)].inputs.front());
@@ -173,7 +176,7 @@ MeshSize mesh_size_for(const Plan& plan, std::size_t index) {
     if (given(s, "shape"))
       volume_ml = number(s, "volume_ml", 300.0);
     else if (const long ph = nearest_upstream(plan, index, "phantom"); ph >= 0)
-      volume_ml = number(plan.stages[static_cast<std::size_t>(ph)], "bladder_ml", 300.0);
+      volume_ml = phantom_of(plan.stages[static_cast<std::size_t>(ph)]).bladder_ml;
     // Isotropic remeshing to edge h leaves a closed surface of area A with about 2.8 A / h²
     // triangles (their mean edge comes out a little shorter than the target); the sphere's
     // area is the least a surface of that volume can have.
@@ -212,8 +215,9 @@ struct Cost {
 
 Cost phantom_cost(const Plan& plan, std::size_t i) {
   const double voxels = image_voxels(plan, i);
+  const bool mr = phantom_of(plan.stages[i]).modality == segment::Modality::MR;
   return {1, 1.0 + 0.5e-6 * voxels, 30.0 + 5e-6 * voxels,
-          "synthetic CT of " + count(voxels) + " voxels"};
+          std::string(mr ? "synthetic MR of " : "synthetic CT of ") + count(voxels) + " voxels"};
 }
 
 // ITK's filters run in threads; two keep a shared node's other jobs their cores.

@@ -1,17 +1,19 @@
 #include "vesica/pipelines/Staleness.h"
 
-#include <fstream>
+#include <algorithm>
 #include <map>
 
-#include <nlohmann/json.hpp>
-
-#include "vesica/core/ContentHash.h"
-#include "vesica/core/StageRecord.h"
+#include "Joined.h"
+#include "vesica/pipelines/StageFailure.h"
+#include "vesica/pipelines/StageManifest.h"
+#include "vesica/pipelines/StateFolder.h"
 
 namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
 namespace {
+
+using detail::joined;
 
 bool is_option(const std::string& token) {
   return token.size() > 1 && token[0] == '-';
@@ -49,55 +51,74 @@ std::string shown(const std::string& value) {
   return value.empty() ? "on" : value;
 }
 
-// vesica_core 0.1 sums folder stamps with max(0, mtime) while libstdc++'s file_clock
-// counts from an epoch after today, so a folder's recorded mtime is just a small count and
-// cannot tell an edit that keeps the folder's size. A real mtime in ns is far larger.
-bool stamp_is_trustworthy(const FileRecord& r) {
-  return r.mtime_ns > 1'000'000'000'000LL || r.mtime_ns < -1'000'000'000'000LL;
-}
-
-// For such folders: nothing inside (files, subfolders, the folder itself) was modified
-// after the manifest was written, which happens after the stage wrote its outputs.
-bool folder_untouched_since(const fs::path& dir, fs::file_time_type manifest_time) {
-  std::error_code ec;
-  if (fs::last_write_time(dir, ec) > manifest_time || ec) return false;
-  for (const auto& e : fs::recursive_directory_iterator(dir, ec))
-    if (e.last_write_time(ec) > manifest_time || ec) return false;
-  return !ec;
-}
-
-// Checks a recorded file against the disk: "" when unchanged, else what happened.
-// The recorded hash is trusted while size and mtime are unchanged (for folders with an
-// unusable recorded mtime: while nothing inside is newer than the manifest).
-std::string compare_file(const fs::path& path, const FileRecord& recorded,
-                         fs::file_time_type manifest_time) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return "missing";
-  FileStamp now;
-  try {
-    now = file_stamp(path);
-  } catch (const std::exception&) {
-    return "unreadable";
-  }
-  if (now.size == recorded.size) {
-    if (stamp_is_trustworthy(recorded) && now.mtime_ns == recorded.mtime_ns) return "";
-    if (!stamp_is_trustworthy(recorded) && fs::is_directory(path, ec) &&
-        folder_untouched_since(path, manifest_time))
-      return "";
-  }
-  try {
-    return content_hash(path) == recorded.hash ? "" : "changed";
-  } catch (const std::exception&) {
-    return "unreadable";
-  }
-}
-
 std::vector<std::string> strings(const nlohmann::json& j) {
   std::vector<std::string> out;
   if (j.is_array())
     for (const auto& x : j)
       if (x.is_string()) out.push_back(x.get<std::string>());
   return out;
+}
+
+// The stage's reason to run other than its outputs: version, invocation, inputs ("" when
+// they agree).
+std::string own_reason(const Plan& plan, const PlannedStage& s, const StageManifest& m) {
+  const std::string recorded_version = m.json.value("version", "");
+  if (recorded_version != vesica::version())
+    return "tool version changed (" + recorded_version + " -> " + vesica::version() + ")";
+  const std::vector<std::string> invocation = strings(m.json.value("invocation", nlohmann::json()));
+  if (invocation != s.argv) return describe_invocation_change(invocation, s.argv);
+  for (const FileRecord& r : m.inputs) {
+    const FileState what = compare_with_record(plan.in_workdir(r.path), r, m.written);
+    if (what == FileState::Same) continue;
+    std::string reason = "input " + r.path + " " + to_string(what);
+    const long producer = plan.producer_of(r.path);
+    if (producer >= 0) reason += " (upstream " + plan.stages[producer].id + ")";
+    return reason;
+  }
+  return "";
+}
+
+// Outputs that differ from `records`; a state file (.vesica/...) that does is no edit
+// of the user's and goes to `other` instead, as does a missing output.
+void compare_outputs(const Plan& plan, const std::vector<FileRecord>& records,
+                     fs::file_time_type written, std::vector<std::string>& edited,
+                     std::string& other) {
+  for (const FileRecord& r : records) {
+    const FileState what = compare_with_record(plan.in_workdir(r.path), r, written);
+    if (what == FileState::Same) continue;
+    if (what == FileState::Changed && !state::is_state_path(r.path))
+      edited.push_back(r.path);
+    else if (other.empty())
+      other = "output " + r.path + (what == FileState::Missing ? " is missing" : " changed");
+  }
+}
+
+StageStatus edited_status(const PlannedStage& s, const std::vector<std::string>& edited,
+                          const std::string& other) {
+  StageStatus st{Freshness::Edited, joined(edited), edited};
+  if (!other.empty())
+    st.reason += "; also " + other + " (kept anyway; `vesica reset` reruns " + s.stage + ")";
+  return st;
+}
+
+// No manifest: never run, or its last run did not finish. After a failure the runner
+// recorded the outputs as the stage left them, so a file saved there since (a label map
+// painted by hand after the segmentation failed) is an edit like any other. A run that was
+// killed outright recorded nothing reliable, and the stage just runs again.
+StageStatus without_manifest(const Plan& plan, const PlannedStage& s) {
+  const auto failure = read_stage_failure(plan, s.id);
+  if (!failure) return {Freshness::Missing, "not run yet (no manifest " + s.manifest + ")", {}};
+  if (failure->state == StageFailure::State::Running)
+    return {
+        failure->runner_alive() ? Freshness::Running : Freshness::Failed, failure->describe(), {}};
+  std::vector<std::string> edited;
+  std::string other;
+  compare_outputs(plan, failure->outputs_before, fs::file_time_type::min(), edited, other);
+  std::error_code ec;
+  if (!recorded(failure->outputs_before, s.output) && fs::exists(plan.in_workdir(s.output), ec))
+    edited.push_back(s.output);
+  if (!edited.empty()) return edited_status(s, edited, failure->describe());
+  return {Freshness::Failed, failure->describe(), {}};
 }
 
 }  // namespace
@@ -110,8 +131,34 @@ const char* to_string(Freshness f) {
       return "stale";
     case Freshness::Missing:
       return "missing";
+    case Freshness::Edited:
+      return "edited";
+    case Freshness::Failed:
+      return "failed";
+    case Freshness::Running:
+      return "running";
   }
   return "stale";
+}
+
+bool StageStatus::will_run() const {
+  return state != Freshness::Fresh && state != Freshness::Edited;
+}
+
+std::string StageStatus::line() const {
+  switch (state) {
+    case Freshness::Fresh:
+      return "fresh";
+    case Freshness::Edited:
+      return "edited (kept): " + reason;
+    case Freshness::Failed:
+    case Freshness::Running:
+      return reason;
+    case Freshness::Stale:
+    case Freshness::Missing:
+      break;
+  }
+  return std::string(to_string(state)) + ": " + reason;
 }
 
 std::string describe_invocation_change(const std::vector<std::string>& before,
@@ -133,48 +180,32 @@ std::string describe_invocation_change(const std::vector<std::string>& before,
 
 StageStatus assess_stage(const Plan& plan, std::size_t index) {
   const PlannedStage& s = plan.stages[index];
-  const fs::path manifest_path = plan.in_workdir(s.manifest);
-  std::ifstream in(manifest_path);
-  if (!in) return {Freshness::Missing, "not run yet (no manifest " + s.manifest + ")"};
-  nlohmann::json m = nlohmann::json::parse(in, nullptr, false);
-  if (m.is_discarded() || !m.is_object())
-    return {Freshness::Stale, "manifest " + s.manifest + " is unreadable"};
-  std::error_code ec;
-  const fs::file_time_type manifest_time = fs::last_write_time(manifest_path, ec);
-  const std::string recorded_version = m.value("version", "");
-  if (recorded_version != vesica::version())
-    return {Freshness::Stale,
-            "tool version changed (" + recorded_version + " -> " + vesica::version() + ")"};
-  const std::vector<std::string> invocation = strings(m.value("invocation", nlohmann::json()));
-  if (invocation != s.argv)
-    return {Freshness::Stale, describe_invocation_change(invocation, s.argv)};
-  for (const auto& j : m.value("inputs", nlohmann::json::array())) {
-    const FileRecord r = file_record_from_json(j);
-    const std::string what = compare_file(plan.in_workdir(r.path), r, manifest_time);
-    if (what.empty()) continue;
-    std::string reason = "input " + r.path + " " + what;
-    const long producer = plan.producer_of(r.path);
-    if (producer >= 0) reason += " (upstream " + plan.stages[producer].id + ")";
-    return {Freshness::Stale, reason};
-  }
-  for (const auto& j : m.value("outputs", nlohmann::json::array())) {
-    const FileRecord r = file_record_from_json(j);
-    const std::string what = compare_file(plan.in_workdir(r.path), r, manifest_time);
-    if (what == "missing") return {Freshness::Stale, "output " + r.path + " is missing"};
-    if (!what.empty()) return {Freshness::Stale, "output " + r.path + " was edited"};
-  }
-  return {Freshness::Fresh, ""};
+  const auto m = read_stage_manifest(plan.in_workdir(s.manifest));
+  if (!m) return without_manifest(plan, s);
+  if (!m->readable()) return {Freshness::Stale, "manifest " + s.manifest + " is unreadable", {}};
+  const std::string own = own_reason(plan, s, *m);
+  std::vector<std::string> edited;
+  std::string output_problem;
+  compare_outputs(plan, m->outputs, m->written, edited, output_problem);
+  if (!edited.empty()) return edited_status(s, edited, own.empty() ? output_problem : own);
+  if (!own.empty()) return {Freshness::Stale, own, {}};
+  if (!output_problem.empty()) return {Freshness::Stale, output_problem, {}};
+  return {Freshness::Fresh, "", {}};
 }
 
 std::vector<StageStatus> assess(const Plan& plan) {
   std::vector<StageStatus> out;
+  out.reserve(plan.stages.size());
   for (std::size_t i = 0; i < plan.stages.size(); ++i) {
     StageStatus st = assess_stage(plan, i);
+    // An edited stage keeps its files whatever happens above it, so it neither inherits
+    // nor passes on an upstream change; its readers check their own inputs.
     if (st.state == Freshness::Fresh)
       for (std::size_t d : plan.stages[i].deps)
-        if (out[d].state != Freshness::Fresh) {
+        if (out[d].will_run()) {
           st = {Freshness::Stale,
-                "upstream " + plan.stages[d].id + " is " + to_string(out[d].state)};
+                "upstream " + plan.stages[d].id + " is " + to_string(out[d].state),
+                {}};
           break;
         }
     out.push_back(st);

@@ -1,5 +1,7 @@
 #include "vesica/pipelines/StudyExpansion.h"
 
+#include <algorithm>
+
 namespace vesica::pipelines {
 namespace {
 
@@ -13,6 +15,17 @@ std::string folder_safe(const Param& p) {
 }
 
 }  // namespace
+
+long long study_run_count(const StudySpec& study) {
+  if (!study.present()) return 0;
+  long long runs = study.variants.empty() ? 1 : static_cast<long long>(study.variants.size());
+  for (const auto& axis : study.matrix) {
+    const auto values = static_cast<long long>(axis.values.size());
+    if (values > 0 && runs > kTooManyRuns / values) return kTooManyRuns;
+    runs *= values;
+  }
+  return std::min(runs, kTooManyRuns);
+}
 
 std::vector<StudyRun> expand_study(const StudySpec& study) {
   if (!study.present()) return {};

@@ -1,7 +1,6 @@
-// vesica-segment: CT or MR (DICOM folder or volume file) to a bladder label map.
+// vesica-segment: CT or MR (DICOM folder or volume file) to a bladder label map. Its
+// options are the segment parameter table (SegmentParameters.h) and the series choice.
 #include <cstdio>
-#include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -10,36 +9,19 @@
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
+#include "vesica/core/NumberRange.h"
+#include "vesica/core/ParameterCli.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/segment/BladderSegmenter.h"
 #include "vesica/segment/DicomSeries.h"
 #include "vesica/segment/LabelStatistics.h"
+#include "vesica/segment/SegmentParameters.h"
 #include "vesica/segment/VolumeReader.h"
 
 namespace seg = vesica::segment;
 
 namespace {
-
-std::optional<std::array<double, 3>> parse_seed(const std::string& text) {
-  if (text == "auto") return std::nullopt;
-  std::array<double, 3> v{};
-  std::stringstream in(text);
-  std::string item;
-  int i = 0;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      if (i >= 3) throw std::invalid_argument(item);
-      v[i++] = std::stod(item, &used);
-      if (used != item.size() || !std::isfinite(v[i - 1])) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      vesica::usage_error("--seed must be 'auto' or x,y,z in mm");
-    }
-  }
-  if (i != 3) vesica::usage_error("--seed must be 'auto' or x,y,z in mm");
-  return v;
-}
 
 void list_series(const std::string& input, bool json) {
   const auto all = seg::scan_dicom_folder(input);
@@ -84,13 +66,6 @@ std::vector<std::string> recorded_arguments(int argc, char** argv) {
   return args;
 }
 
-// A --series value as recorded: a key stays, anything else (a UID) becomes its key.
-std::string recorded_series(const std::string& series) {
-  const bool is_key =
-      series.size() == 16 && series.find_first_not_of("0123456789abcdef") == std::string::npos;
-  return series.empty() || is_key ? series : seg::series_key(series);
-}
-
 // --modality auto: the DICOM header's Modality, or CT for a volume file (which carries
 // no modality).
 seg::Modality resolve_modality(const std::string& option, const seg::Volume& volume,
@@ -100,52 +75,6 @@ seg::Modality resolve_modality(const std::string& option, const seg::Volume& vol
   return seg::modality_from_name(volume.modality, input,
                                  "only CT and MR are segmented; give --modality ct or mr to "
                                  "treat the series as one");
-}
-
-void add_mr_options(CLI::App& app, seg::MrParams& mr) {
-  app.add_option("--bias-spacing-mm", mr.bias_spacing_mm, "MR: grid of the N4 bias correction")
-      ->check(CLI::Range(1.0, 20.0))
-      ->capture_default_str();
-  app.add_option("--bias-levels", mr.bias_levels, "MR: N4 B-spline fitting levels")
-      ->check(CLI::Range(1, 6))
-      ->capture_default_str();
-  app.add_option("--bias-iterations", mr.bias_iterations, "MR: N4 iterations per level")
-      ->check(CLI::Range(1, 500))
-      ->capture_default_str();
-  app.add_option("--reference-percentile", mr.reference_percentile,
-                 "MR: percentile of the corrected body signal taken as bright reference")
-      ->check(CLI::Range(50.0, 100.0))
-      ->capture_default_str();
-  app.add_option("--min-brightness", mr.min_brightness,
-                 "MR: urine near the seed reads at least this x the reference")
-      ->check(CLI::Range(0.01, 1.0))
-      ->capture_default_str();
-  app.add_option("--auto-seed-level", mr.auto_seed_level,
-                 "MR: automatic seeding looks for compact regions above this x the reference")
-      ->check(CLI::Range(0.01, 1.0))
-      ->capture_default_str();
-  app.add_option("--window-sigmas", mr.window_sigmas,
-                 "MR: learned window half width in standard deviations of the seed region")
-      ->check(CLI::Range(0.5, 10.0))
-      ->capture_default_str();
-  app.add_option("--min-window", mr.min_window, "MR: window floor at least this below urine (1)")
-      ->check(CLI::Range(0.0, 0.9))
-      ->capture_default_str();
-  app.add_option("--max-window", mr.max_window, "MR: window floor at most this below urine (1)")
-      ->check(CLI::Range(0.01, 0.95))
-      ->capture_default_str();
-}
-
-nlohmann::json mr_parameters(const seg::MrParams& mr) {
-  return {{"bias_spacing_mm", mr.bias_spacing_mm},
-          {"bias_levels", mr.bias_levels},
-          {"bias_iterations", mr.bias_iterations},
-          {"reference_percentile", mr.reference_percentile},
-          {"min_brightness", mr.min_brightness},
-          {"auto_seed_level", mr.auto_seed_level},
-          {"window_sigmas", mr.window_sigmas},
-          {"min_window", mr.min_window},
-          {"max_window", mr.max_window}};
 }
 
 nlohmann::json thresholds(const seg::SegmentResult& r, seg::Modality modality) {
@@ -162,6 +91,26 @@ nlohmann::json thresholds(const seg::SegmentResult& r, seg::Modality modality) {
           {"border_rel", r.border_level}};
 }
 
+// The checks that involve two parameters (each one's own range is the table's).
+void check_parameter_pairs(const seg::SegmentParams& p) {
+  if (!(p.lower_hu < p.upper_hu)) vesica::usage_error("--lower-hu must be below --upper-hu");
+  if (!(p.opening_mm <= p.max_opening_mm))
+    vesica::usage_error("--opening-mm must not exceed --max-opening-mm");
+  if (!(p.min_volume_ml < p.max_volume_ml))
+    vesica::usage_error("--min-volume-ml must be below --max-volume-ml");
+  if (!(p.mr.min_window <= p.mr.max_window))
+    vesica::usage_error("--min-window must not exceed --max-window");
+}
+
+// The shell's defaults depend on the modality, known once the input is read.
+void check_shell(const seg::SegmentParams& p) {
+  if (!(p.shell_inner() < p.shell_outer()))
+    vesica::usage_error("--shell-inner-mm (" + vesica::format_number(p.shell_inner()) +
+                        " mm) must be below --shell-outer-mm (" +
+                        vesica::format_number(p.shell_outer()) + " mm) for " +
+                        seg::modality_name(p.modality));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -170,56 +119,16 @@ int main(int argc, char** argv) {
       "NRRD, MHA)",
       "vesica-segment"};
   vesica::CommonOptions common;
-  seg::SegmentParams p;
-  std::string input, output, seed_text = "auto", series, modality = "auto";
-  double shell_inner = 0, shell_outer = 0;
+  seg::SegmentSettings settings;
+  vesica::ParameterTable table = seg::parameter_table(settings);
+  seg::SegmentParams& p = settings.params;
+  std::string input, output, series;
   bool list = false;
   app.add_option("input", input, "DICOM folder or .nii/.nii.gz/.nrrd/.mha volume")->required();
   app.add_option("-o,--output", output, "Label map (.nii.gz, .nii, .nrrd, .mha)");
-  app.add_option("--modality", modality,
-                 "auto (DICOM header; CT for volume files), ct or mr (T2-weighted)")
-      ->check(CLI::IsMember({"auto", "ct", "mr"}))
-      ->capture_default_str();
-  app.add_option("--seed", seed_text, "Seed x,y,z in mm (patient LPS) or 'auto'")
-      ->capture_default_str();
-  app.add_option("--lower-hu", p.lower_hu, "CT: urine window lower bound (HU)")
-      ->capture_default_str();
-  app.add_option("--upper-hu", p.upper_hu, "CT: urine window upper bound (HU)")
-      ->capture_default_str();
   app.add_option("--series", series, "Series key (see --list-series) or SeriesInstanceUID");
   app.add_flag("--list-series", list, "List the series of a DICOM folder and exit");
-  app.add_option("--roi-radius-mm", p.roi_radius_mm, "Half edge of the region of interest")
-      ->capture_default_str();
-  app.add_option("--work-spacing-mm", p.work_spacing_mm,
-                 "Finer or anisotropic inputs are processed at this")
-      ->check(CLI::Range(0.3, 10.0))
-      ->capture_default_str();
-  app.add_option("--diffusion-iterations", p.diffusion_iterations,
-                 "Curvature anisotropic diffusion iterations")
-      ->capture_default_str();
-  app.add_option("--diffusion-conductance", p.diffusion_conductance,
-                 "Curvature anisotropic diffusion conductance")
-      ->capture_default_str();
-  app.add_option("--opening-mm", p.opening_mm, "Opening radius that cuts thin bridges")
-      ->capture_default_str();
-  app.add_option("--max-opening-mm", p.max_opening_mm, "Leak guard: largest opening radius")
-      ->capture_default_str();
-  app.add_option("--max-volume-ml", p.max_volume_ml, "Leak guard: largest plausible bladder")
-      ->capture_default_str();
-  app.add_option("--min-volume-ml", p.min_volume_ml, "Smaller results are refused")
-      ->check(CLI::Range(0.0, 5000.0))
-      ->capture_default_str();
-  app.add_option("--shell-inner-mm", shell_inner,
-                 "Surroundings shell inner distance (default CT 3, MR 1.5)");
-  app.add_option("--shell-outer-mm", shell_outer,
-                 "Surroundings shell outer distance (default CT 9, MR 3)");
-  app.add_option("--levelset-curvature", p.levelset_curvature, "Level-set curvature weight")
-      ->capture_default_str();
-  app.add_option("--levelset-band-mm", p.levelset_band_mm, "Level-set refinement band")
-      ->capture_default_str();
-  app.add_option("--levelset-iterations", p.levelset_iterations, "Level-set iterations")
-      ->capture_default_str();
-  add_mr_options(app, p.mr);
+  vesica::add_parameter_options(app, table);
   vesica::add_common_options(app, common);
 
   return vesica::run_stage_main(app, argc, argv, common, [&] {
@@ -230,26 +139,21 @@ int main(int argc, char** argv) {
     if (output.empty()) vesica::usage_error("-o/--output is required");
     if (!supported_output(output))
       vesica::usage_error("output must end in .nii.gz, .nii, .nrrd or .mha: " + output);
-    if (!(p.lower_hu < p.upper_hu)) vesica::usage_error("--lower-hu must be below --upper-hu");
-    if (!(p.mr.min_window <= p.mr.max_window))
-      vesica::usage_error("--min-window must not exceed --max-window");
-    if (app.count("--shell-inner-mm")) p.shell_inner_mm = shell_inner;
-    if (app.count("--shell-outer-mm")) p.shell_outer_mm = shell_outer;
-    if (!(p.shell_inner() < p.shell_outer()))
-      vesica::usage_error("--shell-inner-mm must be below --shell-outer-mm");
-    p.seed_mm = parse_seed(seed_text);
+    check_parameter_pairs(p);
 
     const auto args = recorded_arguments(argc, argv);
     std::vector<const char*> arg_ptrs;
     for (const auto& a : args) arg_ptrs.push_back(a.c_str());
     vesica::StageRecord record("vesica-segment", static_cast<int>(arg_ptrs.size()),
                                arg_ptrs.data());  // StageRecord drops argv[0] itself
+    record.parameters() = table.values();
     seg::Volume volume;
     {
       vesica::PhaseTimer t(record, "read");
       volume = seg::read_volume(input, series);
     }
-    p.modality = resolve_modality(modality, volume, input);
+    p.modality = resolve_modality(settings.modality, volume, input);
+    check_shell(p);
     const bool is_mr = p.modality == seg::Modality::MR;
     if (is_mr && (app.count("--lower-hu") || app.count("--upper-hu")))
       vesica::log()->warn("--lower-hu/--upper-hu apply to CT only; the MR window is learned");
@@ -265,25 +169,6 @@ int main(int argc, char** argv) {
     }
     record.add_input(input);
     record.add_output(output);
-    record.parameters() = {{"modality", modality},
-                           {"seed", seed_text},
-                           {"lower_hu", p.lower_hu},
-                           {"upper_hu", p.upper_hu},
-                           {"series", recorded_series(series)},
-                           {"roi_radius_mm", p.roi_radius_mm},
-                           {"work_spacing_mm", p.work_spacing_mm},
-                           {"diffusion_iterations", p.diffusion_iterations},
-                           {"diffusion_conductance", p.diffusion_conductance},
-                           {"opening_mm", p.opening_mm},
-                           {"max_opening_mm", p.max_opening_mm},
-                           {"max_volume_ml", p.max_volume_ml},
-                           {"min_volume_ml", p.min_volume_ml},
-                           {"shell_inner_mm", p.shell_inner()},
-                           {"shell_outer_mm", p.shell_outer()},
-                           {"levelset_curvature", p.levelset_curvature},
-                           {"levelset_band_mm", p.levelset_band_mm},
-                           {"levelset_iterations", p.levelset_iterations},
-                           {"mr", mr_parameters(p.mr)}};
     const auto stats = seg::label_statistics(*result.label);
     const auto& sp = volume.image->GetSpacing();
     const auto size = volume.image->GetLargestPossibleRegion().GetSize();

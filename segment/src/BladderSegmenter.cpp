@@ -16,9 +16,6 @@ using namespace ops;
 // CT border clamps (HU) around the urine level U: never below U - 60 (fat-side partial
 // volumes), at least 5 below U. Air beyond the image.
 constexpr double kCtFloorGapHu = 60.0, kCtMinGapHu = 5.0, kCtAirHu = -1000.0;
-// Surroundings shells (mm). CT: wall and soft tissue 3-9 mm out. MR: the detrusor, dark
-// on T2 and always between urine and whatever lies beyond, in the first 1.5-3 mm.
-constexpr double kCtShellMm[2] = {3.0, 9.0}, kMrShellMm[2] = {1.5, 3.0};
 
 void check_seed_inside(const Float& image, const std::array<double, 3>& seed_mm,
                        const std::string& source) {
@@ -91,14 +88,6 @@ void segment_mr(const Float& image, const SegmentParams& p, const std::string& s
 }
 
 }  // namespace
-
-double SegmentParams::shell_inner() const {
-  return shell_inner_mm.value_or(modality == Modality::MR ? kMrShellMm[0] : kCtShellMm[0]);
-}
-
-double SegmentParams::shell_outer() const {
-  return shell_outer_mm.value_or(modality == Modality::MR ? kMrShellMm[1] : kCtShellMm[1]);
-}
 
 SegmentResult segment_bladder(const ScanImage& image, const SegmentParams& p,
                               const std::string& source) {

@@ -94,9 +94,9 @@ ScanImage::DirectionType direction_of(const PhantomSpec& spec) {
 }
 
 ScanImage::SpacingType spacing_of(const PhantomSpec& spec) {
+  const std::array<double, 3> mm = phantom_spacing_mm(spec);
   ScanImage::SpacingType s;
-  s[0] = s[1] = spec.spacing_mm;
-  s[2] = spec.slice_spacing_mm > 0 ? spec.slice_spacing_mm : spec.spacing_mm;
+  for (int i = 0; i < 3; ++i) s[i] = mm[i];
   return s;
 }
 
@@ -104,9 +104,8 @@ ScanImage::SpacingType spacing_of(const PhantomSpec& spec) {
 ScanImage::Pointer make_grid(const PhantomSpec& spec) {
   ScanImage::SizeType size;
   const auto spacing = spacing_of(spec);
-  for (int i = 0; i < 3; ++i)
-    size[i] = std::max<itk::SizeValueType>(
-        1, static_cast<itk::SizeValueType>(std::lround(spec.fov_mm[i] / spacing[i])));
+  const std::array<double, 3> voxels = phantom_grid_size(spec);
+  for (int i = 0; i < 3; ++i) size[i] = static_cast<itk::SizeValueType>(voxels[i]);
   const auto d = direction_of(spec);
   ScanImage::PointType origin;
   for (int r = 0; r < 3; ++r) {

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/FebioExport.h"
 #include "vesica/simulate/VerificationProtocol.h"
@@ -62,7 +63,10 @@ int run_verification_stage(const std::string& mesh, const std::string& output,
                default_manifest_path(common, (out / "summary.json").string()));
   if (!common.report.empty()) record.write(common.report, "");
   if (common.json) std::cout << record.summary().dump(2) << std::endl;
-  if (!result.completed) fail(mesh, result.failure, "the steps up to that point are in " + output);
+  if (!result.completed) {  // the steps that converged are the user's, as a cystometry's
+    commit_staged_outputs();
+    fail(mesh, result.failure, "the steps up to that point are in " + output);
+  }
   return 0;
 }
 

@@ -7,12 +7,14 @@
 #include <CLI/CLI.hpp>
 
 #include "VerificationStage.h"
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/ParameterCli.h"
 #include "vesica/core/Progress.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
@@ -95,29 +97,42 @@ int main(int argc, char** argv) {
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
-    CystometryResult result;
-    if (options.level == 2) {
-      fluid::FluidMesh urine;
-      {
-        PhaseTimer timer(record, "read");
-        urine = read_urine(mesh);
-      }
-      PhaseTimer timer(record, "simulate");
-      result = run_cystometry(wall, spec, p, options, &urine);
-    } else {
-      PhaseTimer timer(record, "simulate");
-      result = run_cystometry(wall, spec, p, options);
-    }
+    // The output folder is written whole under a temporary name and replaces the earlier
+    // one only when the run completed; a failed run's partial results are kept only where
+    // they replace nothing.
     const fs::path out(output);
+    const bool had_earlier = fs::exists(out);
+    CystometryResult result;
+    write_atomically(out, [&](const fs::path& tmp) {
+      options.output_dir = tmp;
+      if (options.level == 2) {
+        fluid::FluidMesh urine;
+        {
+          PhaseTimer timer(record, "read");
+          urine = read_urine(mesh);
+        }
+        PhaseTimer timer(record, "simulate");
+        result = run_cystometry(wall, spec, p, options, &urine);
+      } else {
+        PhaseTimer timer(record, "simulate");
+        result = run_cystometry(wall, spec, p, options);
+      }
+      record.summary() = result.summary;
+      record.write(tmp / "summary.json", "");
+      if (!result.completed && had_earlier)
+        fail(mesh, result.failure, "the earlier results in " + output + " are kept");
+    });
     record.add_output(out / "history.csv");
     if (options.write_series) record.add_output(out / "series.pvd");
     if (options.write_series && options.level == 2) record.add_output(out / "fluid.pvd");
-    record.summary() = result.summary;
-    record.write(out / "summary.json",
-                 default_manifest_path(common, (out / "summary.json").string()));
+    record.add_output(out / "summary.json");
+    if (!result.completed) {    // no manifest: the runner reruns it next time
+      commit_staged_outputs();  // nothing was there: the partial results are the user's
+      fail(mesh, result.failure, "results up to that point are in " + output);
+    }
+    record.write("", default_manifest_path(common, (out / "summary.json").string()));
     if (!common.report.empty()) record.write(common.report, "");
     if (common.json) std::cout << record.summary().dump(2) << std::endl;
-    if (!result.completed) fail(mesh, result.failure, "results up to that point are in " + output);
     return 0;
   });
 }

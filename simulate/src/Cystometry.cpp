@@ -7,6 +7,7 @@
 #include "CystometryProtocol.h"
 #include "HydrostaticCavity.h"
 #include "PrestressReference.h"
+#include "ProtocolRanges.h"
 #include "fluid/NavierStokesCavity.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
@@ -60,6 +61,7 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
     if (o.dynamic || o.reference != ReferenceState::Scale)
       usage_error("level 2 supports the scaled reference (--reference scale) without --dynamic");
   }
+  detail::require_protocol_ranges(p, o);  // after the checks above, whose words users know
   if (reference_ml > 0.0) validate_against_reference(p, o, reference_ml);
 }
 

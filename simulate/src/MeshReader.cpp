@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "MeshSanity.h"
+
 #include "vesica/core/Error.h"
 #include "vesica/core/Regions.h"
 #include "vesica/core/Units.h"
@@ -25,7 +27,7 @@ Source source_of(const std::filesystem::path& path) {
        "give the .msh or .vtu from vesica-mesh, or a surface .vtp/.stl/.ply/.obj");
 }
 
-io::VolumeMesh read_mesh(const std::filesystem::path& path) {
+io::VolumeMesh read_file(const std::filesystem::path& path) {
   switch (source_of(path)) {
     case Source::Msh:
       return io::read_msh(path).mesh;
@@ -39,6 +41,13 @@ io::VolumeMesh read_mesh(const std::filesystem::path& path) {
   m.nodes = s.points;
   m.triangles = s.triangles;
   m.tri_region = s.region;
+  return m;
+}
+
+// The file's arrays, checked before anything indexes them (MeshSanity.h).
+io::VolumeMesh read_mesh(const std::filesystem::path& path) {
+  io::VolumeMesh m = read_file(path);
+  detail::check_mesh_arrays(m, path.string());
   return m;
 }
 
@@ -81,6 +90,7 @@ fluid::FluidMesh read_urine(const std::filesystem::path& path) {
   if (source_of(path) == Source::Surface)
     fail(path.string(), "holds no tetrahedra", "level 2 needs the .msh of vesica-mesh --fluid");
   const io::VolumeMesh m = read_mesh(path);
+  detail::check_tetrahedra(m, path.string());
   std::map<int, int> node_of = wall_numbering(m);
   fluid::FluidMesh urine;
   urine.nodes.resize(node_of.size());
@@ -103,6 +113,7 @@ WallModel read_wall(const std::filesystem::path& path, double default_thickness_
   io::VolumeMesh m = read_mesh(path);
   if (m.triangles.rows() == 0)
     fail(path.string(), "contains no triangles", "the wall must be a triangle surface");
+  detail::check_wall_surface(m, path.string());
   if (source_of(path) == Source::Msh) complete_membrane_fields(default_thickness_m, m);
   WallModel wall;
   const std::map<int, int> node_of = wall_numbering(m);

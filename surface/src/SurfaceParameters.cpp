@@ -86,6 +86,13 @@ void add_remeshing_entries(SurfaceStageOptions& o, ParameterTable& t) {
            "windowed-sinc pass band (smaller = smoother)");
   t.flag_off("no_volume_rescale", o.volume_rescale,
              "keep the smoothed volume instead of the label's voxel volume");
+  t.choice("component", o.label_sanity.component, {"only", "largest"},
+           "label in several pieces: only = an error (specks under 1 % dropped), largest = "
+           "keep the largest");
+  t.number("min_volume_ml", o.label_sanity.min_volume_ml, "ml",
+           NumberRange::at_least(0.01).at_most(5000).because(
+               "a label smaller than this is a segmentation error, not a bladder"),
+           "smallest bladder label accepted");
   t.flag("fill_holes", o.repair.fill_holes, "fill small holes of an input surface");
   t.number("max_hole_mm", o.repair.max_hole_perimeter_mm, "mm",
            NumberRange::greater_than(0).at_most(1000), "largest hole perimeter filled");

@@ -55,6 +55,9 @@ TriangleSurface surface_from_label(const SurfaceStageOptions& options, StageReco
     PhaseTimer timer(record, "read");
     label = read_label_volume(options.input, options.label);
   }
+  const LabelCleanup cleanup = clean_label(options.label_sanity, options.input, label);
+  record.summary()["label_components"] = cleanup.components;
+  add_notes(cleanup.notes, record.summary());
   const double voxel_volume_mm3 = label.voxel_count() * label.voxel_volume_mm3();
   record.summary()["label_voxel_count"] = label.voxel_count();
   record.summary()["label_volume_ml"] = units::ml_from_mm3(voxel_volume_mm3);

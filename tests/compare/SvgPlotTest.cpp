@@ -1,5 +1,6 @@
 // SvgPlot: data land where the axis mapping says, every element kind is emitted, text is
 // escaped.
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -50,4 +51,19 @@ TEST(SvgPlot, NaNBreaksALine) {
   const std::string svg = plot.render();
   const auto path = svg.substr(svg.find("<path class=\"series\""));
   EXPECT_EQ(std::count(path.begin(), path.begin() + path.find("/>"), 'M'), 2);
+}
+
+TEST(SvgPlot, AMillionPointRecordingIsDrawnWithAFewThousandKeepingItsPeak) {
+  // Default 720 x 400: y = 90 of [0, 100] is at 34 + 318 - 0.9 * 318 = 65.80 px.
+  std::vector<double> x(1000000), y(1000000, 10.0);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i) * 0.01;
+  y[654321] = 90.0;  // one sample of Qmax
+  SvgPlot plot("flow", "time (s)", "flow (ml/s)");
+  plot.y_range(0, 100).add_line("flow", x, y);
+  const std::string svg = plot.render();
+  const std::string::difference_type segments =
+      std::count(svg.begin(), svg.end(), 'L');  // one "L" per drawn point after the first
+  EXPECT_LE(segments, 4100);
+  EXPECT_NE(svg.find(" 65.80"), std::string::npos);
+  EXPECT_LT(svg.size(), 200000u);
 }

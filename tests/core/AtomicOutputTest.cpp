@@ -1,5 +1,10 @@
 #include "vesica/core/AtomicOutput.h"
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <fstream>
 #include <sstream>
 
@@ -7,15 +12,7 @@
 #include "vesica/core/Error.h"
 
 namespace fs = std::filesystem;
-
-namespace {
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-}  // namespace
+using vesica::test::file_text;
 
 TEST(AtomicOutput, TemporaryKeepsExtensionAndFolder) {
   const fs::path tmp = vesica::temporary_sibling("out/dir/bladder.nii.gz");
@@ -29,7 +26,7 @@ TEST(AtomicOutput, ReplacesOnlyWhenComplete) {
   const fs::path dir = vesica::test::scratch_dir("atomic");
   const fs::path target = dir / "a.txt";
   vesica::write_text_atomically(target, "first");
-  EXPECT_EQ(read(target), "first");
+  EXPECT_EQ(file_text(target), "first");
   // A writer that fails half-way leaves the old content and no temporary behind.
   EXPECT_THROW(vesica::write_atomically(target,
                                         [](const fs::path& tmp) {
@@ -37,7 +34,7 @@ TEST(AtomicOutput, ReplacesOnlyWhenComplete) {
                                           throw vesica::Error(tmp.string(), "boom");
                                         }),
                vesica::Error);
-  EXPECT_EQ(read(target), "first");
+  EXPECT_EQ(file_text(target), "first");
   int files = 0;
   for (const auto& e : fs::directory_iterator(dir)) (void)e, ++files;
   EXPECT_EQ(files, 1);
@@ -52,7 +49,7 @@ TEST(AtomicOutput, WritesFolders) {
       std::ofstream(tmp / "x.txt") << round;
     });
   }
-  EXPECT_EQ(read(target / "x.txt"), "1");
+  EXPECT_EQ(file_text(target / "x.txt"), "1");
 }
 
 TEST(AtomicOutput, FolderNamedWithTrailingSlash) {
@@ -63,5 +60,70 @@ TEST(AtomicOutput, FolderNamedWithTrailingSlash) {
     fs::create_directories(tmp);
     std::ofstream(tmp / "slice.dcm") << "x";
   });
-  EXPECT_EQ(read(dir / "ct" / "slice.dcm"), "x");
+  EXPECT_EQ(file_text(dir / "ct" / "slice.dcm"), "x");
+}
+
+TEST(AtomicOutput, AFullDiskFailsTheWriteAndKeepsTheEarlierFile) {
+  const fs::path dir = vesica::test::scratch_dir("atomic-full-disk");
+  const fs::path target = dir / "metrics.json";
+  vesica::write_text_atomically(target, "earlier");
+  // A child process with a 4 KiB file-size limit and SIGXFSZ ignored, as every vesica
+  // executable runs: the write fails with EFBIG instead of killing the process.
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+    try {
+      vesica::write_text_atomically(target, std::string(100000, 'x'));
+    } catch (const vesica::Error&) {
+      ::_exit(7);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 7);
+  EXPECT_EQ(file_text(target), "earlier");
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) (void)e, ++files;
+  EXPECT_EQ(files, 1);
+}
+
+TEST(AtomicOutput, TheFaultSwitchFailsTheNamedOutputOnly) {
+  const fs::path dir = vesica::test::scratch_dir("atomic-fault");
+  vesica::write_text_atomically(dir / "index.html", "earlier page");
+  ::setenv("VESICA_FAIL_WRITE", "index.html", 1);
+  EXPECT_THROW(vesica::write_text_atomically(dir / "index.html", "new page"), vesica::Error);
+  vesica::write_text_atomically(dir / "metrics.json", "{}");
+  ::unsetenv("VESICA_FAIL_WRITE");
+  EXPECT_EQ(file_text(dir / "index.html"), "earlier page");
+  EXPECT_EQ(file_text(dir / "metrics.json"), "{}");
+}
+
+TEST(AtomicOutput, TemporariesOfAKilledRunAreRemovedByTheNextWrite) {
+  const fs::path dir = vesica::test::scratch_dir("atomic-stale");
+  // pid 2^30 - 1 is above any pid Linux hands out: that process is gone.
+  const fs::path stale = dir / ".tmp-1073741823-5-0-sim";
+  fs::create_directories(stale);
+  std::ofstream(stale / "step_0000.vtu") << "half";
+  const fs::path other = dir / ".tmp-1073741823-5-1-other.txt";  // another output's
+  std::ofstream(other) << "x";
+  vesica::write_atomically(dir / "sim", [](const fs::path& tmp) {
+    fs::create_directories(tmp);
+    std::ofstream(tmp / "history.csv") << "t\n";
+  });
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(other));
+}
+
+TEST(AtomicOutput, AnEmptyResultIsAnError) {
+  const fs::path dir = vesica::test::scratch_dir("atomic-empty");
+  EXPECT_THROW(vesica::write_atomically(dir / "a.vtp",
+                                        [](const fs::path& tmp) {
+                                          std::ofstream{tmp};  // a writer that failed silently
+                                        }),
+               vesica::Error);
+  EXPECT_FALSE(fs::exists(dir / "a.vtp"));
 }

@@ -136,6 +136,7 @@ TEST(ParameterTable, AWordStandsForTheFieldsSpecialValueAndItsNumberIsRefused) {
   ToySettings s;
   ParameterTable t = toy_table(s);
   EXPECT_EQ(t.values()["k_kpa"], "auto");
+  EXPECT_EQ(t.find("k_kpa")->default_text(), "auto");  // not "auto kPa"
   EXPECT_EQ(t.find("k_kpa")->accepted(), "auto (1000 mu) or [0.1, 1000000] kPa");
   EXPECT_EQ(refusal(t, "k_kpa", "0"), "0 is outside auto (1000 mu) or [0.1, 1000000] kPa");
   EXPECT_EQ(refusal(t, "k_kpa", "50"), "");

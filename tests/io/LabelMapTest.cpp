@@ -138,5 +138,16 @@ TEST(LabelMaps, SegmentationSavedBySlicerGivesItsBladderSegment) {
   for (int v = 0; v < 24; ++v) EXPECT_EQ(m.voxels[v], voxels[v] == 3 ? 1 : 0) << v;
 }
 
+// A tool that writes plain NRRD under a .seg.nrrd name (no segment keys): Slicer reads it
+// as one segment per label value, vesica as a plain label map.
+TEST(LabelMaps, SegNrrdWithoutSegmentKeysIsAPlainLabelMap) {
+  const auto dir = scratch_dir("io-label-plain-seg");
+  const io::LabelMap m = ellipsoid_map();
+  io::write_label_map(m, dir / "plain.nrrd");
+  std::filesystem::rename(dir / "plain.nrrd", dir / "plain.seg.nrrd");
+  EXPECT_FALSE(io::lists_segments(dir / "plain.seg.nrrd"));
+  expect_same(io::read_label_map(dir / "plain.seg.nrrd"), m);
+}
+
 }  // namespace
 }  // namespace vesica::test

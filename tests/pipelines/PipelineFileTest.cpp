@@ -131,6 +131,7 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
                             "inputs: {ct: ../data/ct}\n"
                             "stages:\n"
                             "  segment:\n"
+                            "    tool: teststage\n"  // no table: any param reaches the argv
                             "    input: ${inputs.ct}\n"
                             "    output: seg/bladder.nii.gz\n"
                             "    params: {seed: auto, lower_hu: -20, fluid: true, no_void: false,"
@@ -158,14 +159,19 @@ TEST(PipelineFile, ParamsBecomeTheContractsCommandLine) {
                                             "--label",
                                             "true",
                                             "--report",
-                                            "seg/segment.json",
+                                            ".vesica/segment.json",
                                             "--manifest",
-                                            "seg/segment.manifest.json"};
+                                            ".vesica/segment.manifest.json"};
   EXPECT_EQ(plan.stages[0].argv, segment);
-  const std::vector<std::string> surface = {
-      "seg/bladder.nii.gz",   "-o",       "bladder.vtp",          "--aux",
-      "../../data/ct",        "--report", "reports/surface.json", "--manifest",
-      "surface.manifest.json"};
+  const std::vector<std::string> surface = {"seg/bladder.nii.gz",
+                                            "-o",
+                                            "bladder.vtp",
+                                            "--aux",
+                                            "../../data/ct",
+                                            "--report",
+                                            "reports/surface.json",
+                                            "--manifest",
+                                            ".vesica/surface.manifest.json"};
   EXPECT_EQ(plan.stages[1].argv, surface);
   EXPECT_EQ(plan.stages[1].deps, std::vector<std::size_t>{0});
   EXPECT_EQ(plan.workdir, (dir / "study" / "out").lexically_normal());

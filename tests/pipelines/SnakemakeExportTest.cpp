@@ -1,5 +1,6 @@
 // `vesica export --snakemake`: Snakemake runs the same commands and produces byte-identical
-// outputs (same content hashes) and the manifests `vesica run` would have written.
+// outputs (same content hashes) and the manifests `vesica run` would have written; and it
+// keeps an edited intermediate as `vesica run` does.
 #include <gtest/gtest.h>
 
 #include "PipelineTestSupport.h"
@@ -8,12 +9,46 @@
 namespace fs = std::filesystem;
 using namespace vesica::test;
 
+namespace {
+
+bool snakemake_missing(const fs::path& dir) {
+  return run_command("snakemake --version", dir).exit_code != 0;
+}
+
+#define VESICA_REQUIRE_SNAKEMAKE(dir)                            \
+  if (snakemake_missing(dir)) {                                  \
+    if (running_in_ci()) FAIL() << "snakemake is not installed"; \
+    GTEST_SKIP() << "snakemake is not installed";                \
+  }
+
+// Exports `file` for `workdir` and runs it with Snakemake.
+CommandResult snakemake(const fs::path& file, const fs::path& workdir, const fs::path& dir) {
+  auto exported = run_vesica(
+      "export --snakemake " + quoted(file.string()) + " --workdir " + quoted(workdir.string()),
+      dir);
+  if (exported.exit_code != 0) return exported;
+  write_text(dir / "Snakefile", exported.out);
+  auto sm = run_command(
+      "cd " + quoted(dir.string()) + " && snakemake -s Snakefile -j 2 --cores 2 --quiet", dir);
+  sm.err += "\n" + exported.out;
+  return sm;
+}
+
+// Runs `file` in `native` with `vesica run` and in `snake` with Snakemake; the number of
+// stages `vesica run` ran.
+std::size_t run_both(const fs::path& file, const fs::path& native, const fs::path& snake,
+                     const fs::path& dir) {
+  const std::size_t ran = run_json(file, dir, "--workdir " + quoted(native.string())).size();
+  const auto sm = snakemake(file, snake, dir);
+  EXPECT_EQ(sm.exit_code, 0) << sm.err;
+  return ran;
+}
+
+}  // namespace
+
 TEST(SnakemakeExport, SnakemakeProducesTheNativeRunnersOutputs) {
   const fs::path dir = scratch_dir("snakemake");
-  if (run_command("snakemake --version", dir).exit_code != 0) {
-    if (running_in_ci()) FAIL() << "snakemake is not installed";
-    GTEST_SKIP() << "snakemake is not installed";
-  }
+  VESICA_REQUIRE_SNAKEMAKE(dir);
   write_text(dir / "ext" / "measured.txt", "M\n");
   const fs::path file = dir / "p.yaml";
   write_text(file,
@@ -30,20 +65,48 @@ TEST(SnakemakeExport, SnakemakeProducesTheNativeRunnersOutputs) {
              "study:\n"
              "  variants: {one: {}, two: {b.label: B2}}\n");
   const fs::path native = dir / "native", snake = dir / "snake";
-  ASSERT_EQ(run_json(file, dir, "--workdir " + quoted(native.string())).size(), 5u);
-
-  const auto exported = run_vesica(
-      "export --snakemake " + quoted(file.string()) + " --workdir " + quoted(snake.string()), dir);
-  ASSERT_EQ(exported.exit_code, 0) << exported.err;
-  write_text(dir / "Snakefile", exported.out);
-  const auto sm = run_command(
-      "cd " + quoted(dir.string()) + " && snakemake -s Snakefile -j 2 --cores 2 --quiet", dir);
-  ASSERT_EQ(sm.exit_code, 0) << sm.err << "\n" << exported.out;
-
+  ASSERT_EQ(run_both(file, native, snake, dir), 5u);
   for (const std::string out :
        {"a.txt", "sim", "report/c.txt", "variants/two/sim", "variants/two/report/c.txt"})
     EXPECT_EQ(vesica::content_hash(snake / out), vesica::content_hash(native / out)) << out;
   EXPECT_EQ(slurp(snake / "variants/two/report/c.txt"), "A\nB2\nM\nC\n");
   // The manifests Snakemake's rules left make `vesica run` see everything as fresh.
   EXPECT_EQ(run_json(file, dir, "--workdir " + quoted(snake.string())), Ids{});
+}
+
+// The same edits in two workdirs, one run by `vesica run`, one by Snakemake: a file and a
+// folder output edited by hand, each kept byte for byte, everything after them rerun.
+TEST(SnakemakeExport, SnakemakeKeepsAnEditedIntermediateAsTheNativeRunnerDoes) {
+  const fs::path dir = scratch_dir("snakemake-edit");
+  VESICA_REQUIRE_SNAKEMAKE(dir);
+  const fs::path file = dir / "p.yaml";
+  write_text(file,
+             "stages:\n"
+             "  a: {tool: teststage, output: a.txt, params: {label: A}}\n"
+             "  b: {tool: teststage, input: a.txt, output: b.txt, params: {label: B}}\n"
+             "  c: {tool: teststage, input: b.txt, output: c.txt, params: {label: C}}\n"
+             "  f: {tool: teststage, input: a.txt, output: fold, params: {label: F, dir: true}}\n"
+             "  g: {tool: teststage, input: fold/data.txt, output: g.txt, params: {label: G}}\n");
+  const fs::path native = dir / "native", snake = dir / "snake";
+  ASSERT_EQ(run_both(file, native, snake, dir), 5u);
+  for (const fs::path& w : {native, snake}) {
+    write_text(w / "b.txt", "b edited by hand\n");
+    write_text(w / "fold/data.txt", "fold edited by hand\n");
+  }
+
+  EXPECT_EQ(run_json(file, dir, "--workdir " + quoted(native.string())), (Ids{"c", "g"}));
+  const auto second = snakemake(file, snake, dir);
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+
+  EXPECT_EQ(slurp(snake / "b.txt"), "b edited by hand\n");
+  EXPECT_EQ(slurp(snake / "c.txt"), "b edited by hand\nC\n");
+  EXPECT_EQ(slurp(snake / "g.txt"), "fold edited by hand\nG\n");
+  for (const std::string out : {"a.txt", "b.txt", "c.txt", "fold", "g.txt"})
+    EXPECT_EQ(vesica::content_hash(snake / out), vesica::content_hash(native / out)) << out;
+  EXPECT_FALSE(fs::exists(snake / ".vesica/backup"));
+  // Either engine, then the other, finds nothing to do.
+  EXPECT_EQ(run_json(file, dir, "--workdir " + quoted(snake.string())), Ids{});
+  const auto again = snakemake(file, native, dir);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(slurp(native / "c.txt"), "b edited by hand\nC\n");
 }

@@ -56,7 +56,7 @@ TEST(StageParameters, EachStageDescribesTheTableTheRunnerChecks) {
 TEST(StageParameters, ManifestsListEveryTableEntry) {
   const fs::path dir = scratch_dir("stage-parameters-manifest");
   small_sphere(dir);
-  expect_every_entry("surface", manifest_parameters(dir / "s.vtp.manifest.json"),
+  expect_every_entry("surface", manifest_parameters(dir / ".vesica/s.vtp.manifest.json"),
                      {{"shape", "sphere"}, {"volume_ml", 20.0}, {"edge_mm", 5.0}});
 
   const auto mesh = run_command(
@@ -66,7 +66,7 @@ TEST(StageParameters, ManifestsListEveryTableEntry) {
       dir);
   ASSERT_EQ(mesh.exit_code, 0) << mesh.err;
   expect_every_entry(
-      "mesh", manifest_parameters(dir / "m.msh.manifest.json"),
+      "mesh", manifest_parameters(dir / ".vesica/m.msh.manifest.json"),
       {{"fluid", true}, {"tet_size_mm", 4.0}, {"thickness_by_region", {{"fixed", 4.5}}}});
 
   const auto simulate = run_command(
@@ -90,8 +90,76 @@ TEST(StageParameters, ManifestsListEveryTableEntry) {
                        " -o " + quoted((dir / "report").string()) + " --spike-cmh2o 8"),
       dir);
   ASSERT_EQ(compare.exit_code, 0) << compare.err;
-  expect_every_entry("compare", manifest_parameters(dir / "report.manifest.json"),
+  expect_every_entry("compare", manifest_parameters(dir / ".vesica/report.manifest.json"),
                      {{"spike_cmh2o", 8.0}});
+}
+
+TEST(StageParameters, PhantomAndSegmentManifestsListEveryTableEntryAndNoUid) {
+  // A small CT (3 mm voxels, 67 x 67 x 50): made and segmented in seconds.
+  const fs::path dir = scratch_dir("stage-parameters-segment");
+  const std::string ct = quoted((dir / "ct").string()), label = quoted((dir / "b.nii.gz").string());
+  const auto phantom = run_command(
+      tool_command("phantom", "-o " + ct +
+                                  " --bladder-ml 200 --spacing-mm 3 --fov-mm 200,200,150 "
+                                  "--noise-hu 10 --rng-seed 7"),
+      dir);
+  ASSERT_EQ(phantom.exit_code, 0) << phantom.err;
+  expect_every_entry("phantom", manifest_parameters(dir / "ct.manifest.json"),
+                     {{"bladder_ml", 200.0},
+                      {"spacing_mm", 3.0},
+                      {"fov_mm", {200.0, 200.0, 150.0}},
+                      {"noise_hu", 10.0},
+                      {"rng_seed", 7}});
+
+  const auto segment = run_command(
+      tool_command("segment", ct + " -o " + label +
+                                  " --seed 0,-15,-10 --min-volume-ml 20 --shell-outer-mm 10 "
+                                  "--bias-levels 2"),
+      dir);
+  ASSERT_EQ(segment.exit_code, 0) << segment.err;
+  const nlohmann::json parameters = manifest_parameters(dir / "b.nii.gz.manifest.json");
+  expect_every_entry("segment", parameters,
+                     {{"seed", {0.0, -15.0, -10.0}},
+                      {"min_volume_ml", 20.0},
+                      {"shell_outer_mm", 10.0},
+                      {"bias_levels", 2}});
+  // The series is chosen by --series, not a parameter: neither its key nor a UID is one
+  // (SeriesUid.* in tests/segment checks the whole manifest for the UID).
+  EXPECT_FALSE(parameters.contains("series"));
+}
+
+TEST(StageParameters, SegmentAndPhantomParamsAreCheckedBeforeAnyStageRuns) {
+  const fs::path dir = scratch_dir("stage-parameters-validate-segment");
+  write_text(dir / "pipe.yaml",
+             "stages:\n"
+             "  phantom: {output: ct, params: {spacing_mm: 0.1, shape: ball}}\n"
+             "  segment:\n"
+             "    input: ct\n"
+             "    output: b.nii.gz\n"
+             "    params: {seed: autoo, lower_huu: -20, shell_outer_mm: 0}\n");
+  const auto r = run_vesica("validate " + quoted((dir / "pipe.yaml").string()), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  // Columns counted by hand in the YAML above.
+  for (const char* expected :
+       {"pipe.yaml:2:46: parameter 'spacing_mm' of phantom: 0.1 is outside [0.2, 10] mm\n",
+        "pipe.yaml:2:58: parameter 'shape' of phantom: 'ball' is not one of sphere, ellipsoid, "
+        "pouch\n",
+        "pipe.yaml:6:20: parameter 'seed' of segment: 'autoo' is not x,y,z (LPS mm) or auto (did "
+        "you mean 'auto'?)\n",
+        "pipe.yaml:6:27: unknown parameter 'lower_huu' for segment (did you mean 'lower_hu'?)\n",
+        "pipe.yaml:6:59: parameter 'shell_outer_mm' of segment: 0 is outside auto (the "
+        "modality's: CT 9, MR 3) or (0, 100] mm\n"})
+    EXPECT_NE(r.err.find(expected), std::string::npos) << expected << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 5) << r.err;
+
+  // Their params are checked, so validate no longer names them as unchecked.
+  write_text(dir / "good.yaml",
+             "stages:\n"
+             "  phantom: {output: ct, params: {spacing_mm: 3, fov_mm: [200, 200, 150]}}\n"
+             "  segment: {input: ct, output: b.nii.gz, params: {seed: [0, -15, -10]}}\n");
+  const auto good = run_vesica("validate " + quoted((dir / "good.yaml").string()), dir);
+  EXPECT_EQ(good.exit_code, 0) << good.err;
+  EXPECT_EQ(good.out.find("not checked"), std::string::npos) << good.out;
 }
 
 TEST(StageParameters, HelpShowsUnitsRangesAndDefaults) {

@@ -47,7 +47,7 @@ void write_mesh_report(const fs::path& path, long triangles, long tetrahedra) {
 // surface -> mesh -> simulate with these simulate parameters, the mesh's report present.
 Planned cystometry_on(const fs::path& dir, long triangles, long tetrahedra,
                       const std::string& simulate_params) {
-  write_mesh_report(dir / "out" / "mesh.json", triangles, tetrahedra);
+  write_mesh_report(dir / "out" / ".vesica" / "mesh.json", triangles, tetrahedra);
   write_text(dir / "p.yaml",
              "workdir: out\n"
              "stages:\n"
@@ -108,7 +108,7 @@ TEST(StageResources, SegmentationAndMeshingCoverTheirBenchmarks) {
   const fs::path dir = scratch_dir("resources-images");
   // docs/benchmarks.md: a 512×512×300 phantom at 0.8 mm segmented in 4.69 s with a peak of
   // 454 MB; mesh --fluid of 5,120 triangles into 47,002 tetrahedra in 2.23 s.
-  write_mesh_report(dir / "out" / "mesh.json", 5120, 47002);
+  write_mesh_report(dir / "out" / ".vesica" / "mesh.json", 5120, 47002);
   write_text(dir / "p.yaml",
              "workdir: out\n"
              "stages:\n"
@@ -159,7 +159,7 @@ TEST(StageResources, SnakemakeReadsEachRulesThreadsMemoryAndTime) {
     if (running_in_ci()) FAIL() << "snakemake is not installed";
     GTEST_SKIP() << "snakemake is not installed";
   }
-  write_mesh_report(dir / "out" / "mesh.json", 16928, 0);
+  write_mesh_report(dir / "out" / ".vesica" / "mesh.json", 16928, 0);
   write_text(dir / "p.yaml",
              "workdir: out\n"
              "stages:\n"

@@ -38,7 +38,7 @@ TEST(Study, VariantsShareCommonUpstreamStages) {
   EXPECT_EQ(slurp(dir / "out/variants/stiff/c.txt"), "A\nB2\nC\n");
   EXPECT_EQ(slurp(dir / "out/variants/late/c.txt"), "A\nB\nC9\n");
   EXPECT_EQ(slurp(dir / "out/b/out.txt"), "A\nB\n");
-  EXPECT_TRUE(fs::exists(dir / "out/variants/soft/b/b.manifest.json"));
+  EXPECT_TRUE(fs::exists(dir / "out/.vesica/b@soft.manifest.json"));
   EXPECT_FALSE(fs::exists(dir / "out/c.txt"));  // the unvaried c is used by no run
   EXPECT_EQ(run_json(dir / "study.yaml", dir), Ids{});
 }
@@ -187,7 +187,7 @@ TEST(Study, KeepGoingRunsTheVariantsAFailureDoesNotTouch) {
 }
 
 // vesica-simulate writes its results and manifest for a run that stalls, then exits 1.
-TEST(Study, AStageThatFailsAfterWritingIsMissingNextTime) {
+TEST(Study, AStageThatFailsAfterWritingRunsAgainNextTime) {
   const fs::path dir = scratch_dir("study-fail-after-writing");
   write_text(
       dir / "s.yaml",
@@ -197,5 +197,8 @@ TEST(Study, AStageThatFailsAfterWritingIsMissingNextTime) {
   EXPECT_EQ(run_json(dir / "s.yaml", dir, "", &code), Ids{});
   EXPECT_EQ(code, 1);
   EXPECT_EQ(slurp(dir / "a.txt"), "A\n");  // its results stay
-  EXPECT_EQ(status_of(dir / "s.yaml", dir).at("a").first, "missing");
+  EXPECT_EQ(status_of(dir / "s.yaml", dir).at("a").first, "failed");
+  EXPECT_EQ(run_json(dir / "s.yaml", dir, "", &code), Ids{});  // it runs again (and fails)
+  EXPECT_EQ(code, 1);
+  EXPECT_FALSE(fs::exists(dir / ".vesica/backup"));  // its own results, nobody's edit
 }

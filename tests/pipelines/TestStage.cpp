@@ -3,14 +3,17 @@
 // does something whose result is known by hand: the output is the concatenation of its
 // inputs (a folder input contributes its files in name order) followed by one line
 // "<label>\n". `--dir` makes the output a folder holding that text as data.txt.
+// `--progress-steps N` reports N steps through vesica::Progress, 100 ms apart.
 #include <fstream>
 #include <sstream>
 #include <thread>
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/Progress.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/core/StagedOutputs.h"
 
 namespace fs = std::filesystem;
 
@@ -44,7 +47,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> inputs;
   std::string output, label = "stage", aux;
   bool fail = false, fail_after_writing = false, dir = false;
-  int sleep_ms = 0;
+  int sleep_ms = 0, progress_steps = 0;
   app.add_option("inputs", inputs, "Input files or folders");
   app.add_option("-o,--output", output, "Output file (or folder with --dir)")->required();
   app.add_option("--label", label, "Line appended to the output");
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
                "Write everything, manifest included, then fail (like a simulation that stalls)");
   app.add_flag("--dir", dir, "Write a folder with data.txt instead of a file");
   app.add_option("--sleep-ms", sleep_ms, "Wait this long before writing (parallel tests)");
+  app.add_option("--progress-steps", progress_steps, "Report this many steps, 100 ms apart");
   vesica::add_common_options(app, common);
   return vesica::run_stage_main(app, argc, argv, common, [&] {
     vesica::StageRecord record("teststage", argc, argv);
@@ -70,6 +74,14 @@ int main(int argc, char** argv) {
     text += label + "\n";
     if (fail) vesica::fail(output, "told to fail", "remove --fail");
     if (sleep_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(sleep_ms));
+    if (progress_steps > 0) {
+      vesica::Progress progress("teststage");
+      for (int step = 1; step <= progress_steps; ++step) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        progress.update("step " + std::to_string(step) + "/" + std::to_string(progress_steps),
+                        static_cast<double>(step) / progress_steps);
+      }
+    }
     if (dir) {
       vesica::write_atomically(output, [&](const fs::path& tmp) {
         fs::create_directories(tmp);
@@ -81,7 +93,10 @@ int main(int argc, char** argv) {
     record.add_output(output);
     record.summary()["bytes"] = text.size();
     record.write(common.report, vesica::default_manifest_path(common, output));
-    if (fail_after_writing) vesica::fail(output, "told to fail after writing");
+    if (fail_after_writing) {  // as vesica-simulate keeps a stalled run's results
+      vesica::commit_staged_outputs();
+      vesica::fail(output, "told to fail after writing");
+    }
     return 0;
   });
 }

@@ -199,7 +199,7 @@ TEST(SeriesUid, NeverInTheSummaryManifestListingOrMessages) {
                      dir),
             0)
       << read_text(dir / "stderr.txt");
-  for (const char* f : {"s.json", "s.manifest.json", "stderr.txt", "stdout.txt"}) {
+  for (const char* f : {"s.json", ".vesica/s.manifest.json", "stderr.txt", "stdout.txt"}) {
     const std::string text = read_text(dir / f);
     EXPECT_EQ(text.find(uid), std::string::npos) << f;
   }

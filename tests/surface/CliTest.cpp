@@ -32,7 +32,7 @@ TEST(SurfaceCli, RunnerStyleCallPrintsOnlyJson) {
   EXPECT_NEAR(summary["volume_ml"].get<double>(), 17744 * 27e-3, 1e-6);
   EXPECT_GT(summary["regions"]["triangle_counts"]["fixed"].get<int>(), 0);
   EXPECT_GT(summary["regions"]["triangle_counts"]["outlet"].get<int>(), 0);
-  std::ifstream manifest_in(dir / "bladder.vtp.manifest.json");
+  std::ifstream manifest_in(dir / ".vesica/bladder.vtp.manifest.json");
   const auto manifest = nlohmann::json::parse(manifest_in);
   EXPECT_EQ(manifest["parameters"]["edge_mm"], 4.0);
   EXPECT_EQ(manifest["parameters"]["outlet"], "auto");

@@ -1,49 +1,66 @@
 #pragma once
-// Calibration of the level-1 bladder model to a measured filling curve (and flow): the
-// named parameters are fitted by Levenberg-Marquardt (Eigen, unsupported module) with a
-// forward-difference Jacobian; every residual evaluation is one simulated cystometry
-// through vesica::simulate::run_cystometry in this process (no files).
+// Calibration of vesica's cystometry model to a recording (docs/physics.md §9): the
+// parameters the model can fit and how each enters its settings, the model and its fast
+// surrogate as ModelSimulators (vesica::simulate::run_cystometry in this process, no
+// files), and the two-stage fit (TwoStageFit.h) over them.
 //
-// Residuals: simulated - measured Pdet (cmH2O) on the 5 ml grid of ModelComparison over
-// [volume_lo_ml, volume_hi_ml]; with outlet parameters (r1, r2, p_open) also simulated -
-// measured flow (ml/s) on a 1 s grid from the onset of flow.
-// Parameters are searched as u = ln p and clamped to their bounds when evaluated; the 95 %
-// interval is p ± 1.96 p sqrt(diag(σ² (JᵀJ)⁻¹)) with J = ∂r/∂u at the solution and
-// σ² = Σr²/(n - m) (delta method).
+// The surrogate, until simulate offers its 0-D sphere-equivalent model: the same laws and
+// protocol on a coarse triangulated sphere of the reference volume (128 triangles), whose
+// runs cost a small fraction of the patient wall's.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "vesica/compare/CalibrationResult.h"
-#include "vesica/compare/IcsParameters.h"
+#include "vesica/compare/CalibrationTargets.h"
+#include "vesica/compare/FitParameter.h"
+#include "vesica/compare/ModelRun.h"
+#include "vesica/compare/TwoStageFit.h"
 #include "vesica/simulate/Cystometry.h"
 
 namespace vesica::compare {
 
-// One parameter the calibration can fit, in the unit it is reported in.
-struct ParameterSpec {
-  std::string name, unit;
-  double initial, lower, upper;
-  bool outlet;  // acts on voiding only (needs the flow residuals)
+// A parameter the calibration can fit: its search range (FitParameter) and how its value
+// (in FitParameter::unit) enters the model.
+struct ModelParameter {
+  FitParameter fit;
+  std::function<void(double value, simulate::MaterialSpec&, simulate::ProtocolSettings&)> apply;
 };
 
-// mu (kPa), k (kPa, bulk), beta (-), tau (s), k1 (Pa), k2 (-), r1 (cmH2O s/ml),
-// r2 (cmH2O s²/ml²), p_open (cmH2O). Throws a usage error for an unknown name.
-ParameterSpec parameter_spec(const std::string& name);
+// Every parameter by name; throws a usage error naming the choices for an unknown one.
+ModelParameter model_parameter(const std::string& name);
+std::vector<std::string> model_parameter_names();
+
+// One simulated cystometry setting: wall, material, protocol, numerics.
+struct CystometryModel {
+  simulate::WallModel wall;
+  simulate::MaterialSpec material;
+  simulate::ProtocolSettings protocol;
+  simulate::RunOptions run;
+};
+
+// Simulates a parameter vector on `base`: applies the values, fills to capacity_ml and, with
+// `voiding`, voids; a run that fails is retried once with halved steps.
+ModelSimulator cystometry_simulator(const CystometryModel& base,
+                                    const std::vector<ModelParameter>& parameters,
+                                    double capacity_ml, bool voiding);
+
+// The interim surrogate wall: a sphere of `reference_ml` with the thickness `thickness_m`.
+simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m);
+// The fast surrogate of a model: the same material and protocol on the surrogate wall.
+CystometryModel surrogate_of(const CystometryModel& model);
 
 struct CalibrationProblem {
-  simulate::WallModel wall;
-  simulate::MaterialSpec material;      // start values (SI), fitted keys overwritten
-  simulate::ProtocolSettings protocol;  // start values, fitted keys overwritten
-  simulate::RunOptions run;
-  std::vector<ParameterSpec> parameters;
-  Curve measured_filling;  // (volume ml, Pdet cmH2O)
-  Curve measured_flow;     // (s since onset of flow, ml/s); used with outlet parameters
-  double volume_lo_ml = 0, volume_hi_ml = 0;
-  double volume_step_ml = 5.0;
-  int max_simulations = 40;
+  CystometryModel model;  // start values; fitted entries overwritten per run
+  std::vector<ModelParameter> parameters;
+  CalibrationTargets targets;
+  double data_end_ml = 0;  // the recording's end of filling (0: targets.capacity_ml)
+  bool use_surrogate = true;
+  FitBudget budget;
 };
 
-CalibrationResult calibrate(const CalibrationProblem& problem);
+// The result and the fitted model's run over the whole data.
+FitOutcome calibrate(const CalibrationProblem& problem);
 
 // A simulation history as a Recording (so simulated curves use the history.csv definitions).
 Recording recording_from_history(const std::vector<simulate::HistoryRow>& history);

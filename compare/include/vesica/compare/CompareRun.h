@@ -15,6 +15,11 @@ struct CalibrationModel {
   double k_kpa = 0.0;  // 0 ("auto" on the command line): K = 1000 mu, following mu as it is fitted
   double thickness_mm = 3.0;
   double start_ml = 50.0;
+  // Voiding drive while voiding is fitted and the drive is not (0: the simulation's default).
+  double straining_kpa = 0.0;
+  double detrusor_kpa = 0.0;
+  bool surrogate = true;     // the two-stage fit's fast surrogate search first
+  int surrogate_starts = 4;  // starting points of the surrogate search
 };
 
 struct CompareOptions {
@@ -24,6 +29,8 @@ struct CompareOptions {
   std::string mesh;
   std::string calibrate;
   std::vector<double> fit_volume_ml;  // empty or {lo, hi}
+  double fill_rate_ml_min = 0.0;      // 0 ("auto"): inferred from a time-indexed recording
+  double capacity_ml = 0.0;  // a voiding table's volume before voiding (0: the voided volume)
   ArtefactOptions artefacts;
   CalibrationModel simulation;
   int max_simulations = 40;

@@ -30,6 +30,10 @@ struct IcsParameters {
   Maybe booi, bci;
   std::string booi_class, bci_class;
   Maybe voiding_start_s;  // start of measurable flow (time origin of the voiding curves)
+  // Infusion rate: the slope of the bladder volume against time while filling (given
+  // instead for a table without time, by the caller).
+  Maybe fill_rate_ml_min;
+  std::vector<std::string> notes;  // what the recording cannot give, and why
 };
 
 IcsParameters compute_ics(const Recording& recording, const std::vector<ArtefactFlag>& flags);

@@ -1,10 +1,21 @@
 #pragma once
 // Outputs are written under a temporary name in the destination folder and renamed
-// into place only when complete, so that a crash, a bad input or a full disk never
-// leaves a half-written file where a finished one was.
+// into place only when complete and checked, so that a crash, a bad input or a full disk
+// never leaves a half-written file or folder where a finished one was.
+//
+// Every write is checked: the writer's own errors (thrown as vesica::Error), an empty
+// result, the fsync of every file and folder written. A process that writes outputs
+// ignores SIGXFSZ (run_stage_main does), so that a file-size limit shows up as a write
+// error instead of killing it silently.
+//
+// Fault injection, for tests of what a failed write leaves behind: when the environment
+// variable VESICA_FAIL_WRITE is set, an output whose file name contains its value fails
+// as a full disk would, after its writer ran and before it is renamed into place.
 #include <filesystem>
 #include <functional>
 #include <string>
+
+#include "vesica/core/OutputGuard.h"
 
 namespace vesica {
 
@@ -12,13 +23,17 @@ namespace vesica {
 // because ITK and VTK choose the file format from the name.
 std::filesystem::path temporary_sibling(const std::filesystem::path& target);
 
-// Calls write(tmp) with a temporary path, fsyncs what was written (file or folder
-// tree) and renames it onto `target`. On an exception the temporary is removed and
-// `target` is left untouched. Parent folders are created.
+// Calls write(tmp) with a temporary path; the writer creates a file or a folder there.
+// Then checks and fsyncs what was written (a folder gets vesica's marker) and renames it
+// onto `target`, replacing only what require_replaceable allows (checked before the
+// writer runs and again before the rename). On any error the temporary is removed,
+// `target` is left untouched and a vesica::Error naming `target` is thrown. Parent
+// folders are created. Temporaries left by killed runs (their process is gone) for the
+// same target are removed first.
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
 
-// Convenience for text outputs (JSON, CSV, HTML).
+// Convenience for text outputs (JSON, CSV, HTML); the written size is checked.
 void write_text_atomically(const std::filesystem::path& target, const std::string& text);
 
 }  // namespace vesica

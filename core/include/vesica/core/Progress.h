@@ -1,6 +1,7 @@
 #pragma once
 // Progress of long work on a terminal: "[stage] step  42%  12.3 s elapsed, ~17 s left".
-// Silent when stderr is not a terminal or when the tool runs with --json.
+// Silent when stderr is not a terminal (unless VESICA_PROGRESS=1: `vesica run` sets it to
+// draw a stage's progress on its own terminal) or when the tool runs with --json.
 #include <chrono>
 #include <string>
 

@@ -23,7 +23,9 @@ void add_common_options(CLI::App& app, CommonOptions& options);
 int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& options,
                    const std::function<int()>& body);
 
-// Manifest default: beside the report when one is given, else beside the main output.
+// Manifest default: in the folder .vesica/ beside the report when one is given
+// (.vesica/<report stem>.manifest.json), else beside the main output
+// (.vesica/<output name>.manifest.json).
 std::string default_manifest_path(const CommonOptions& options, const std::string& output);
 
 }  // namespace vesica

@@ -27,7 +27,8 @@ struct LabelMap {
 };
 
 // Voxels equal to `label` are inside; label 0 means "any non-zero voxel" (for a Slicer
-// segmentation: the segment named "bladder", or its only segment). Throws vesica::Error
+// segmentation: the segment named "bladder", or its only segment; a .seg.nrrd whose header
+// lists no segments is a plain label map). Throws vesica::Error
 // naming the file when it cannot be read, is not 3-D, or its spacing, origin or direction
 // are not finite and positive (spacing).
 LabelMap read_label_map(const std::filesystem::path& path, int label = 0);

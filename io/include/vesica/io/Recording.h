@@ -1,7 +1,9 @@
 #pragma once
 // One urodynamic recording (a measured cystometry + pressure-flow study, or a simulated
 // history.csv) in clinical units, one entry per row of the source file. Channels that the
-// file did not have are empty vectors; every present channel has one value per row.
+// file did not have are empty vectors; every present channel has one value per row. A
+// table read off at volume steps (as papers print filling and voiding tables) has no time
+// channel: its rows are indexed by the infused or voided volume.
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,15 +23,22 @@ struct Recording {
   std::vector<double> infused_ml;  // cumulative infused volume (pump)
   std::vector<double> volume_ml;   // bladder volume, when the file states it (simulation)
 
-  std::size_t rows() const { return time_s.size(); }
+  // Rows of the recording: the length of its channels (the longest, should one be short).
+  std::size_t rows() const;
+  bool has_time() const { return !time_s.empty(); }
 
   // Pdet of row i: the recorded Pdet channel when present (the device subtracts the
   // unrounded signals), else Pves - Pabd.
   double pdet_cmh2o(std::size_t i) const;
   bool has_pdet() const;
   bool has_flow() const { return !flow_ml_s.empty(); }
-  // Bladder volume of row i: the volume channel when present, else infused - voided
-  // (a measured recording starts from an empty bladder unless told otherwise).
+  // Bladder volume before the first row when the file has no volume channel: 0 for a
+  // cystometry (filling starts from the empty bladder), the capacity for a voiding table
+  // that gives only the voided volume (set by the caller, who knows it).
+  double start_volume_ml = 0.0;
+
+  // Bladder volume of row i: the volume channel when present, else
+  // start_volume_ml + infused - voided.
   double bladder_volume_ml(std::size_t i) const;
   bool has_volume() const;
   // Cumulative voided volume of row i: the voided channel, else the trapezoidal

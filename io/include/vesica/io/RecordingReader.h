@@ -16,6 +16,12 @@
 //   volume  volume_ml, volume_l, volume
 // A column's unit is its suffix after the key ("pves_kpa") or a bracketed unit in a mapped
 // name ("Pves [kPa]"); unsuffixed pressure columns use ReaderOptions::pressure_unit.
+// Every recording needs a pressure (pdet, or pves and pabd). Its rows are ordered by
+//  - time, with infused or bladder volume (a cystometry) or voided volume or flow (a
+//    pressure-flow study): time must not go back;
+//  - or, in a table read off at volume steps (as papers print them; no time column), by
+//    the infused or bladder volume (a filling table) or the voided volume (a voiding
+//    table), which must not go down.
 // Errors (vesica::Error) name the file, the row (1-based file line) and the column.
 #include <filesystem>
 #include <map>

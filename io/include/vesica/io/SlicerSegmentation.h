@@ -26,6 +26,10 @@ struct SegmentInfo {
 // True for names ending in ".seg.nrrd" (any case).
 bool is_slicer_segmentation(const std::filesystem::path& path);
 
+// Whether a .seg.nrrd header lists segments (Segment0_Name): a file named so by a tool that
+// writes plain NRRD does not, and is read as a plain label map (LabelMap.h).
+bool lists_segments(const std::filesystem::path& path);
+
 // The segments a .seg.nrrd header lists, in order; throws vesica::Error naming the file
 // when it lists none.
 std::vector<SegmentInfo> read_segments(const std::filesystem::path& path);

@@ -4,6 +4,7 @@
 // Loading never throws: every problem goes to a Diagnostics list.
 #include <filesystem>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "vesica/pipelines/Diagnostics.h"
@@ -65,8 +66,14 @@ struct Variant {
 };
 
 struct StudySpec {
+  // A study larger than this is refused unless the file raises `max_runs`: a few lines of
+  // matrix multiply into more runs than a machine can hold (9 axes of 10 values: 10^9).
+  static constexpr long long kDefaultMaxRuns = 1000;
+
   std::vector<MatrixAxis> matrix;
   std::vector<Variant> variants;
+  long long max_runs = kDefaultMaxRuns;
+  SourcePos max_runs_pos;
   SourcePos pos;
   bool present() const { return !matrix.empty() || !variants.empty(); }
 };
@@ -80,7 +87,12 @@ struct PipelineSpec {
   std::vector<StageSpec> stages;  // file order
   StudySpec study;
 
+  // By name, in O(1): a file of many stages is checked in time linear in its size.
   const StageSpec* find_stage(const std::string& name) const;
+
+ private:
+  mutable std::unordered_map<std::string, std::size_t> stage_index_;  // built on first use
+  mutable std::size_t indexed_ = 0;                                   // stages in the index
 };
 
 PipelineSpec load_pipeline_file(const std::filesystem::path& file, Diagnostics& diagnostics);

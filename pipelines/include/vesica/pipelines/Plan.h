@@ -3,10 +3,13 @@
 // argument list, its paths relative to the workdir and the stages it depends on, in an
 // order where each stage comes after its dependencies.
 #include <filesystem>
+#include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "vesica/pipelines/Diagnostics.h"
+#include "vesica/pipelines/PathIndex.h"
 #include "vesica/pipelines/PipelineFile.h"
 
 namespace vesica::pipelines {
@@ -35,11 +38,23 @@ struct Plan {
 
   // Index of the stage with this id, or -1.
   long index_of(const std::string& id) const;
-  // Index of the stage that writes `path` (or the folder containing it), or -1.
+  // The stages a user means by `name`: the stage with that id, or every study copy of the
+  // stage with that name. Throws vesica::Error (usage) with a suggestion when none.
+  std::vector<std::size_t> named(const std::string& name) const;
+  // Index of the stage that writes `path` (or the folder containing it, or the report), or
+  // -1; O(log n) after the first call.
   long producer_of(const std::string& path) const;
   // Every stage downstream of `index` (not including it).
   std::vector<std::size_t> downstream_of(std::size_t index) const;
   std::filesystem::path in_workdir(const std::string& path) const;
+
+ private:
+  struct Producers {
+    PathIndex outputs;
+    std::unordered_map<std::string, long> reports;
+  };
+  mutable std::shared_ptr<Producers> producers_;  // built by producer_of for `indexed_` stages
+  mutable std::size_t indexed_ = 0;
 };
 
 struct PlanOptions {

@@ -12,6 +12,11 @@ namespace vesica::pipelines {
 // not declared as directory() outputs, because Snakemake would add a marker file to them
 // and change their content hash; a rule reading from a folder depends on the manifest of
 // the stage that writes it instead (the manifest is written last, after the folder).
+//
+// Edited outputs are kept as `vesica run` keeps them (Staleness.h): when Snakemake reads
+// the workflow, it asks `vesica status` which stages keep an edit and leaves their rules
+// out. Snakemake deletes a rule's outputs before running it, so this is the only way it
+// can keep them; the rules that read an edited file then run because it is newer.
 std::string snakemake_workflow(const Plan& plan);
 
 }  // namespace vesica::pipelines

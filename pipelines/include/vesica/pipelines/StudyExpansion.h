@@ -14,6 +14,11 @@ struct StudyRun {
   std::map<std::string, std::vector<Param>> overrides;  // stage -> parameters it sets
 };
 
+// How many runs a study expands to, computed without expanding it; kTooManyRuns when the
+// product exceeds it (the count saturates instead of overflowing).
+inline constexpr long long kTooManyRuns = 1'000'000'000'000LL;
+long long study_run_count(const StudySpec& study);
+
 // No study: an empty list. Matrix runs are named "param-value_param-value"; with variants
 // as well, "variant_param-value".
 std::vector<StudyRun> expand_study(const StudySpec& study);

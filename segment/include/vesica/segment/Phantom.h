@@ -6,34 +6,12 @@
 // LPS), so the bladder volume and centre are exact and independent of the voxel grid; the
 // grid may be axial or oblique, have thick slices, and be stored in either slice order.
 #include <array>
-#include <cstdint>
-#include <string>
 
-#include "vesica/segment/BladderShape.h"
 #include "vesica/segment/DicomSeriesWriter.h"
 #include "vesica/segment/ImageTypes.h"
-#include "vesica/segment/Modality.h"
-#include "vesica/segment/PhantomContrast.h"
+#include "vesica/segment/PhantomSpec.h"
 
 namespace vesica::segment {
-
-enum class PhantomOrientation { Axial, Oblique };
-
-struct PhantomSpec {
-  Modality modality = Modality::CT;
-  double bladder_ml = 300.0;
-  PhantomShape shape = PhantomShape::Sphere;
-  double elongation = 1.0;        // pouch: left-right length ratio (as vesica-surface)
-  double neck_radius_mm = 0.0;    // pouch: 0 = a quarter of the reservoir
-  double spacing_mm = 2.0;        // in-plane voxel edge
-  double slice_spacing_mm = 0.0;  // 0 = spacing_mm (isotropic voxels)
-  std::array<double, 3> fov_mm = {400, 400, 240};  // grid extent (L-R, A-P, I-S)
-  PhantomOrientation orientation = PhantomOrientation::Axial;
-  bool reverse_slices = false;  // slice axis points feet-ward (instance 1 at the top)
-  double noise_hu = 15.0;       // CT: Gaussian noise standard deviation
-  MrAcquisition mr;             // MR: contrast, bias field, noise
-  std::uint32_t rng_seed = 1;
-};
 
 struct PhantomTruth {
   double bladder_volume_ml = 0;               // exact (the pouch: integrated, < 1e-4)

@@ -8,13 +8,19 @@ namespace vesica::segment {
 enum class Tissue { Air, Fat, Urine, BladderWall, Muscle, Bone };
 inline constexpr int kTissueCount = 6;
 
+// The bias field's amplitude and the noise as users give them (vesica-phantom's
+// --bias-percent, --noise-percent): the one default of each, which MrAcquisition holds as
+// a fraction.
+inline constexpr double kMrBiasPercent = 30.0;
+inline constexpr double kMrNoisePercent = 2.5;
+
 struct MrAcquisition {
   double echo_time_ms = 100.0;
   double repetition_time_ms = 4500.0;
   double field_strength_t = 1.5;  // header only: the relaxation times are those at 1.5 T
   bool fat_suppression = false;   // spectral fat saturation: fat keeps 5 % of its signal
-  double bias_fraction = 0.3;     // multiplicative bias field 1 +- this across the view
-  double noise_fraction = 0.025;  // Rician sigma as a fraction of the urine signal
+  double bias_fraction = kMrBiasPercent / 100.0;    // bias field 1 +- this across the view
+  double noise_fraction = kMrNoisePercent / 100.0;  // Rician sigma / the urine signal
 };
 
 struct SpinEchoTissue {

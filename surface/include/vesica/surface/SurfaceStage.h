@@ -9,6 +9,7 @@
 
 #include "vesica/core/StageRecord.h"
 #include "vesica/surface/Isosurface.h"
+#include "vesica/surface/LabelSanity.h"
 #include "vesica/surface/PolygonMeshProcessing.h"
 #include "vesica/surface/Shapes.h"
 #include "vesica/surface/SurfaceIO.h"
@@ -26,7 +27,8 @@ struct SurfaceStageOptions {
   double edge_mm = 0.0;      // remeshing target; 0 = from target_triangles or 4 mm
   int target_triangles = 0;  // alternative to edge_mm
   int remesh_iterations = 5;
-  bool volume_rescale = true;  // label input: rescale to the label's voxel volume
+  bool volume_rescale = true;       // label input: rescale to the label's voxel volume
+  LabelSanityOptions label_sanity;  // label input: one piece, cavities filled, minimum size
   RepairOptions repair;
   RegionOptions regions;
   WriteOptions write;

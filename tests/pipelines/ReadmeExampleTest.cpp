@@ -1,0 +1,141 @@
+// The README's worked example and its "Edit and rerun" section, run as a user types them:
+// the commands are read from README.md's code blocks, in order, with the build's bin/ on
+// PATH, in a fresh folder where pipelines/ is the repository's. The MeshLab step, a
+// comment in the README, is done here the way MeshLab saves. Each part leaves only the
+// files the README names, and every claim the comments make is checked.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <set>
+
+#include "PipelineTestSupport.h"
+#include "ToolEdits.h"
+#include "vesica/core/ContentHash.h"
+
+namespace fs = std::filesystem;
+using namespace vesica::test;
+
+namespace {
+
+// The lines of the first ```sh block after `heading` (and after `after`, when given), and
+// the prose that follows the block up to the next block or heading.
+struct Snippet {
+  std::vector<std::string> lines;
+  std::string prose;
+};
+
+Snippet snippet(const std::string& heading, const std::string& after = "") {
+  const std::string readme = slurp(source_dir() / "README.md");
+  std::size_t at = readme.find("\n" + heading + "\n");
+  if (at == std::string::npos) return {};
+  if (!after.empty()) at = readme.find(after, at);
+  const std::size_t open = readme.find("```sh\n", at);
+  const std::size_t close = readme.find("\n```\n", open);
+  if (open == std::string::npos || close == std::string::npos) return {};
+  Snippet s;
+  std::istringstream block(readme.substr(open + 6, close - open - 6));
+  for (std::string line; std::getline(block, line);) s.lines.push_back(line);
+  const std::size_t end = std::min(readme.find("```", close + 5), readme.find("\n#", close + 5));
+  s.prose = readme.substr(close + 5, end - close - 5);
+  return s;
+}
+
+// Runs one README line in `dir` with bin/ first on PATH (its output captured beside `dir`).
+CommandResult type(const std::string& line, const fs::path& dir) {
+  // The line on a line of its own: its trailing comment must not swallow the redirections.
+  return run_command("cd " + quoted(dir.string()) + " && export PATH=" +
+                         quoted(bin_dir().string()) + ":\"$PATH\" && {\n" + line + "\n}",
+                     dir.parent_path());
+}
+
+// The names in backquotes of `prose`, as top-level entries of a folder ("phantom/dicom" is
+// "phantom", "sim/" is "sim").
+std::set<std::string> named_in(const std::string& prose) {
+  std::set<std::string> names;
+  const std::regex quoted_name("`([^`]+)`");
+  for (auto it = std::sregex_iterator(prose.begin(), prose.end(), quoted_name);
+       it != std::sregex_iterator(); ++it) {
+    const std::string name = (*it)[1];
+    names.insert(name.substr(0, name.find('/')));
+  }
+  return names;
+}
+
+std::set<std::string> entries(const fs::path& dir) {
+  std::set<std::string> out;
+  for (const auto& e : fs::directory_iterator(dir)) out.insert(e.path().filename());
+  return out;
+}
+
+// A user's empty folder, where `pipelines/` is the repository's (the README's commands
+// name pipelines/demo.yaml and pipelines/data/).
+fs::path user_folder(const std::string& name) {
+  fs::path dir = scratch_dir(name) / "home";
+  fs::create_directories(dir);
+  fs::create_directory_symlink(source_dir() / "pipelines", dir / "pipelines");
+  return dir;
+}
+
+}  // namespace
+
+TEST(ReadmeExample, TheStageCommandsLeaveOnlyTheFilesTheReadmeNames) {
+  const fs::path dir = user_folder("readme-stages");
+  const Snippet s = snippet("## Worked example");
+  ASSERT_GE(s.lines.size(), 8u);
+  for (const auto& line : s.lines) {
+    if (line.empty() || line.rfind("make ", 0) == 0 || line.rfind("export PATH", 0) == 0) continue;
+    const CommandResult r = type(line, dir);
+    ASSERT_EQ(r.exit_code, 0) << line << "\n" << r.err;
+  }
+  std::set<std::string> left = entries(dir);
+  left.erase("pipelines");  // the test's link to the repository
+  std::set<std::string> named = named_in(s.prose.substr(0, s.prose.find("Each command")));
+  EXPECT_EQ(left, named);
+  EXPECT_TRUE(fs::exists(dir / ".vesica/bladder.ply.manifest.json"));
+}
+
+TEST(ReadmeExample, ThePipelineRunAndItsEditAndRerunWorkAsWritten) {
+  const fs::path dir = user_folder("readme-edit");
+  const Snippet run = snippet("## Worked example", "The same run as a pipeline file");
+  ASSERT_EQ(run.lines.size(), 3u);
+  for (const auto& line : run.lines) {
+    const CommandResult r = type(line, dir);
+    ASSERT_EQ(r.exit_code, 0) << line << "\n" << r.err;
+  }
+  EXPECT_NE(type(run.lines[1], dir).err.find("nothing to do, 6 stages are fresh"),
+            std::string::npos);
+  const std::size_t names = run.prose.find("names (");
+  EXPECT_EQ(entries(dir / "out"),
+            named_in(run.prose.substr(names, run.prose.find(": the stages'") - names)));
+  EXPECT_EQ(entries(dir / "out/phantom"), std::set<std::string>{"dicom"});
+
+  const Snippet edit = snippet("## Edit and rerun");
+  ASSERT_EQ(edit.lines.size(), 5u);
+  const fs::path ply = dir / "out/bladder.ply";
+  const std::string generated = vesica::content_hash(ply);
+  ASSERT_EQ(edit.lines[0].rfind("# MeshLab:", 0), 0u) << edit.lines[0];
+  subdivide_in_meshlab(ply);
+  const std::string saved = vesica::content_hash(ply);
+
+  CommandResult r = type(edit.lines[1], dir);  // status
+  EXPECT_EQ(r.exit_code, 1);                   // mesh, simulate and compare will run
+  EXPECT_NE(r.out.find("surface   edited (kept): bladder.ply"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("mesh      stale: input bladder.ply changed"), std::string::npos) << r.out;
+  r = type(edit.lines[2], dir);  // run
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("kept your edits: bladder.ply"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("3 of 6 stages ran"), std::string::npos) << r.err;
+  EXPECT_EQ(vesica::content_hash(ply), saved);
+  r = type(edit.lines[3], dir);  // run again
+  EXPECT_NE(r.err.find("nothing to do, 5 stages are fresh, 1 kept with your edits"),
+            std::string::npos)
+      << r.err;
+  r = type(edit.lines[4], dir);  // reset
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(vesica::content_hash(ply), generated);
+  std::vector<fs::path> backups;
+  for (const auto& e : fs::directory_iterator(dir / "out/.vesica/backup/surface"))
+    backups.push_back(e.path());
+  ASSERT_EQ(backups.size(), 1u);
+  EXPECT_EQ(vesica::content_hash(backups[0] / "bladder.ply"), saved);
+}
