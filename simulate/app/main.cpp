@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
       commit_staged_outputs();  // nothing was there: the partial results are the user's
       fail(mesh, result.failure, "results up to that point are in " + output);
     }
-    record.write("", default_manifest_path(common, (out / "summary.json").string()));
+    record.write("", default_manifest_path(common, output));  // .vesica/<folder>.manifest.json
     if (!common.report.empty()) record.write(common.report, "");
     if (common.json) std::cout << record.summary().dump(2) << std::endl;
     return 0;

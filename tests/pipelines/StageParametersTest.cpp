@@ -76,7 +76,7 @@ TEST(StageParameters, ManifestsListEveryTableEntry) {
                                    "--no-series"),
       dir);
   ASSERT_EQ(simulate.exit_code, 0) << simulate.err;
-  expect_every_entry("simulate", manifest_parameters(dir / "sim" / "summary.json.manifest.json"),
+  expect_every_entry("simulate", manifest_parameters(dir / ".vesica/sim.manifest.json"),
                      {{"residual_ml", 20.0},
                       {"start_ml", 20.0},
                       {"capacity_ml", 25.0},
@@ -104,7 +104,7 @@ TEST(StageParameters, PhantomAndSegmentManifestsListEveryTableEntryAndNoUid) {
                                   "--noise-hu 10 --rng-seed 7"),
       dir);
   ASSERT_EQ(phantom.exit_code, 0) << phantom.err;
-  expect_every_entry("phantom", manifest_parameters(dir / "ct.manifest.json"),
+  expect_every_entry("phantom", manifest_parameters(dir / ".vesica/ct.manifest.json"),
                      {{"bladder_ml", 200.0},
                       {"spacing_mm", 3.0},
                       {"fov_mm", {200.0, 200.0, 150.0}},
@@ -117,7 +117,7 @@ TEST(StageParameters, PhantomAndSegmentManifestsListEveryTableEntryAndNoUid) {
                                   "--bias-levels 2"),
       dir);
   ASSERT_EQ(segment.exit_code, 0) << segment.err;
-  const nlohmann::json parameters = manifest_parameters(dir / "b.nii.gz.manifest.json");
+  const nlohmann::json parameters = manifest_parameters(dir / ".vesica/b.nii.gz.manifest.json");
   expect_every_entry("segment", parameters,
                      {{"seed", {0.0, -15.0, -10.0}},
                       {"min_volume_ml", 20.0},

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <gdcmReader.h>
+#include <gdcmSequenceOfItems.h>
 #include <gdcmWriter.h>
 #include <itkImageFileWriter.h>
 
@@ -42,6 +43,40 @@ void set_attribute(const fs::path& file, std::uint16_t group, std::uint16_t elem
   writer.SetFileName(file.c_str());
   writer.SetFile(reader.GetFile());
   ASSERT_TRUE(writer.Write()) << file;
+}
+
+// Adds a sequence of one item, both of undefined length, as scanners write them
+// (ReferencedImageSequence holding one ReferencedSOPInstanceUID).
+void add_referenced_image(const fs::path& file) {
+  gdcm::Reader reader;
+  reader.SetFileName(file.c_str());
+  ASSERT_TRUE(reader.Read()) << file;
+  gdcm::DataElement uid(gdcm::Tag(0x0008, 0x1155));
+  uid.SetVR(gdcm::VR::UI);
+  uid.SetByteValue("1.2.3.4", 8);  // with its padding NUL
+  gdcm::Item item;
+  item.SetVLToUndefined();
+  item.GetNestedDataSet().Insert(uid);
+  gdcm::SmartPointer<gdcm::SequenceOfItems> sequence = new gdcm::SequenceOfItems;
+  sequence->SetLengthToUndefined();
+  sequence->AddItem(item);
+  gdcm::DataElement de(gdcm::Tag(0x0008, 0x1140));
+  de.SetVR(gdcm::VR::SQ);
+  de.SetValue(*sequence);
+  de.SetVLToUndefined();
+  reader.GetFile().GetDataSet().Insert(de);
+  gdcm::Writer writer;
+  writer.SetFileName(file.c_str());
+  writer.SetFile(reader.GetFile());
+  ASSERT_TRUE(writer.Write()) << file;
+}
+
+// Where `bytes` first occur in the file after the 128-byte preamble and "DICM".
+std::streamoff offset_of(const fs::path& file, const std::string& bytes) {
+  const std::string text = read_text(file);
+  const auto at = text.find(bytes, 132);
+  EXPECT_NE(at, std::string::npos) << file;
+  return static_cast<std::streamoff>(at);
 }
 
 std::vector<fs::path> slices_of(const fs::path& series) {
@@ -92,6 +127,60 @@ TEST(HostileDicom, SliceCutShortAnywhereNamesTheSlice) {
     SCOPED_TRACE("cut to " + std::to_string(size) + " bytes");
     expect_rejected(dir, (dir / "cut").string() + kSeed, "slice_0010.dcm");
   }
+}
+
+// A phantom series in scratch folder `name` whose slice `victim` is damaged by
+// damage(dir, series, slice): vesica-segment refuses it with `message` in one line.
+template <class Damage>
+void expect_damaged_slice_refused(const std::string& name, const std::string& victim,
+                                  const Damage& damage, const std::string& message) {
+  const auto dir = vesica::test::scratch_dir(name);
+  const auto series = small_series(dir, "ct");
+  damage(dir, series, series / victim);
+  expect_rejected(dir, series.string() + kSeed,
+                  victim + ": truncated or corrupt DICOM file (" + message + ")");
+}
+
+// A length field that lies (here Rows, implicit VR little endian as the phantom series is
+// written): GDCM allocated the 2.8 GB it names before noticing the file is shorter.
+TEST(HostileDicom, ElementLongerThanTheFileIsRefusedBeforeGdcmAllocatesIt) {
+  expect_damaged_slice_refused(
+      "segment-hostile-length", "slice_0005.dcm",
+      [](const fs::path&, const fs::path&, const fs::path& slice) {
+        const std::string rows("\x28\x00\x10\x00", 4);
+        patch(slice, offset_of(slice, rows) + 4, std::uint32_t{0xA980673C});
+      },
+      "element (0028,0010) of 2843764540 bytes runs past the end of its file");
+}
+
+// A meta element whose value representation is no VR of the standard: GDCM read the meta
+// group as implicit VR and aborted on its own assertion ("Should not happen").
+TEST(HostileDicom, MetaHeaderWithAnUnknownValueRepresentationIsRefused) {
+  expect_damaged_slice_refused(
+      "segment-hostile-meta-vr", "slice_0002.dcm",
+      [](const fs::path&, const fs::path&, const fs::path& slice) {
+        ASSERT_EQ(offset_of(slice, std::string("\x02\x00\x00\x00UL", 6)), 132);
+        patch(slice, 136, 'Q');  // (0002,0000) UL becomes "QL", as a fuzzed file had it
+      },
+      "file meta information is not explicit VR");
+}
+
+// Sequences and items are walked: one of undefined length reads, and an item whose length
+// runs past its file is refused before GDCM trusts it.
+TEST(HostileDicom, SequenceItemLongerThanTheFileIsRefused) {
+  expect_damaged_slice_refused(
+      "segment-hostile-item", "slice_0003.dcm",
+      [](const fs::path& dir, const fs::path& series, const fs::path& slice) {
+        for (const auto& f : slices_of(series)) add_referenced_image(f);
+        ASSERT_EQ(
+            run_tool("vesica-segment",
+                     series.string() + kSeed + " -o " + (dir / "nested.nii.gz").string(), dir),
+            0)
+            << read_text(dir / "stderr.txt");
+        const std::string item_of_undefined_length("\xFE\xFF\x00\xE0\xFF\xFF\xFF\xFF", 8);
+        patch(slice, offset_of(slice, item_of_undefined_length) + 4, std::uint32_t{0x7FFFFFF0});
+      },
+      "element (FFFE,E000) of 2147483632 bytes runs past the end of its file");
 }
 
 // Without the check the first or last slice was dropped and the series read 28 of 30.
