@@ -59,8 +59,7 @@ int run_verification_stage(const std::string& mesh, const std::string& output,
                       {"peak_pressure_pa", peak},
                       {"peak_pressure_cmh2o", units::cmh2o_from_pa(peak)},
                       {"notes", result.note}};
-  record.write(out / "summary.json",
-               default_manifest_path(common, (out / "summary.json").string()));
+  record.write(out / "summary.json", default_manifest_path(common, output));  // as a cystometry's
   if (!common.report.empty()) record.write(common.report, "");
   if (common.json) std::cout << record.summary().dump(2) << std::endl;
   if (!result.completed) {  // the steps that converged are the user's, as a cystometry's
