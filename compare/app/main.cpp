@@ -9,6 +9,7 @@
 
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/CompareRun.h"
+#include "vesica/compare/WallStress.h"
 #include "vesica/compare/WallStressPicture.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/ParameterCli.h"
@@ -24,14 +25,19 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", o.output, "Report folder (index.html, metrics.json)");
   vesica::add_parameter_options(app, table);
   // The child process that draws the wall-stress picture (needs an X display).
-  std::string render_vtu, render_png;
+  std::string render_vtu, render_png, capacity_of;
   app.add_option("--render-wall-stress", render_vtu)->group("");
   app.add_option("--render-png", render_png)->group("");
+  // The runner's study page asks for the wall stress at capacity of each simulation.
+  app.add_option("--wall-stress-at-capacity", capacity_of)->group("");
 
   return vesica::run_stage_main(app, argc, argv, common, [&]() {
     if (!render_vtu.empty()) {
-      std::cout << "array: " << vesica::compare::render_wall_stress_png(render_vtu, render_png)
-                << std::endl;
+      vesica::compare::render_wall_stress_png(render_vtu, render_png);
+      return 0;
+    }
+    if (!capacity_of.empty()) {
+      std::cout << vesica::compare::wall_stress_at_capacity(capacity_of).dump() << std::endl;
       return 0;
     }
     return vesica::compare::run_compare(o, common, argc, argv);

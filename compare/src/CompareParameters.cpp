@@ -76,6 +76,10 @@ ParameterTable parameter_table(CompareOptions& o) {
   t.number("spike_cmh2o", o.artefacts.spike_cmh2o, "cmH2O",
            NumberRange::greater_than(0).at_most(100),
            "rise of Pves and Pabd together that flags a cough or strain row");
+  t.choice("sex", o.sex, {"female", "male"},
+           "the patient's sex, for the pressure-flow criteria (none: from the measured "
+           "recording's header)");
+  t.flag("no_pdf", o.no_pdf, "do not print report.pdf with headless chromium");
   add_calibration_entries(o, t);
   return t;
 }

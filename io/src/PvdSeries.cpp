@@ -1,5 +1,6 @@
 #include "vesica/io/PvdSeries.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -15,15 +16,28 @@ namespace vesica::io {
 PvdSeries::PvdSeries(std::filesystem::path folder, std::string name)
     : folder_(std::move(folder)), name_(std::move(name)) {}
 
-void PvdSeries::add_step(double time_s, const VtuGrid& frame) {
+void PvdSeries::add_step(double time_s, VtuGrid frame) {
+  if (!frame.field_array("time_s"))
+    frame.field_data.insert(frame.field_data.begin(), {"time_s", 1, {time_s}, false});
   char file[32];
   std::snprintf(file, sizeof file, "step_%04zu.vtu", steps_.size());
   write_vtu(frame, steps_folder() / file, VtuWriteOptions{false});
   steps_.emplace_back(time_s, name_ + "/" + file);
+  for (const VtuArray& a : frame.field_data)
+    if (std::find(fields_.begin(), fields_.end(), a.name) == fields_.end())
+      fields_.push_back(a.name);
+  const VtuArray* volume = frame.field_array("volume_ml");
+  if (volume && volume->values.at(0) > largest_volume_ml_) {
+    largest_volume_ml_ = volume->values[0];
+    largest_volume_time_s_ = time_s;
+  }
 }
 
 void PvdSeries::finish() {
   write_text_atomically(pvd_path(), pvd_text(steps_));
+  if (!colouring_ || steps_.empty()) return;
+  const double open_at = largest_volume_ml_ >= 0.0 ? largest_volume_time_s_ : steps_.back().first;
+  write_paraview_script(pvd_path(), *colouring_, fields_, open_at);
 }
 
 std::string pvd_text(const std::vector<std::pair<double, std::string>>& steps) {

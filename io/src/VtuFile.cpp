@@ -66,6 +66,7 @@ vtkNew<vtkUnstructuredGrid> to_grid(const VtuGrid& g, const std::string& file) {
     grid->GetPointData()->AddArray(to_vtk(a, g.points_mm.rows(), file));
   for (const VtuArray& a : g.cell_data)
     grid->GetCellData()->AddArray(to_vtk(a, g.triangles.rows() + g.tets.rows(), file));
+  for (const VtuArray& a : g.field_data) grid->GetFieldData()->AddArray(to_vtk(a, 1, file));
   vtkNew<vtkStringArray> units;
   units->SetName("units");
   units->InsertNextValue("mm");
@@ -124,6 +125,10 @@ const VtuArray* VtuGrid::cell_array(const std::string& name) const {
 
 const VtuArray* VtuGrid::point_array(const std::string& name) const {
   return find(point_data, name);
+}
+
+const VtuArray* VtuGrid::field_array(const std::string& name) const {
+  return find(field_data, name);
 }
 
 void write_vtu(const VtuGrid& g, const std::filesystem::path& path,
@@ -203,6 +208,11 @@ VtuGrid read_vtu(const std::filesystem::path& path) {
   for (int a = 0; a < grid->GetPointData()->GetNumberOfArrays(); ++a)
     if (vtkDataArray* array = grid->GetPointData()->GetArray(a))
       g.point_data.push_back(from_vtk(array, point_order));
+  // GetArray gives the numeric arrays only: the "units" string is checked above.
+  vtkFieldData* field = grid->GetFieldData();
+  for (int a = 0; a < field->GetNumberOfArrays(); ++a)
+    if (vtkDataArray* array = field->GetArray(a); array && array->GetNumberOfTuples() > 0)
+      g.field_data.push_back(from_vtk(array, {0}));
   return g;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "vesica/core/Suggest.h"
+#include "vesica/pipelines/StudyMetrics.h"
 
 namespace fs = std::filesystem;
 
@@ -15,7 +16,9 @@ namespace {
 const std::vector<std::string> kTopKeys = {"pipeline", "workdir", "inputs", "stages", "study"};
 const std::vector<std::string> kStageKeys = {"tool",   "input",    "inputs", "output",
                                              "report", "manifest", "params"};
-const std::vector<std::string> kStudyKeys = {"matrix", "variants", "max_runs"};
+const std::vector<std::string> kStudyKeys = {"matrix", "variants", "max_runs", "question",
+                                             "limits"};
+const std::vector<std::string> kLimitKeys = {"min", "max"};
 
 SourcePos pos_of(const YAML::Node& node) {
   const YAML::Mark m = node.Mark();
@@ -241,6 +244,10 @@ class Reader {
         read_matrix(kv.second);
       } else if (key == "variants") {
         read_variants(kv.second);
+      } else if (key == "question") {
+        if (scalar(kv.second, "study.question")) spec_.study.question = kv.second.as<std::string>();
+      } else if (key == "limits") {
+        read_limits(kv.second);
       } else if (key == "max_runs") {
         read_max_runs(kv.second);
       } else {
@@ -278,6 +285,36 @@ class Reader {
           axis.values.push_back(p);
       }
       spec_.study.matrix.push_back(axis);
+    }
+  }
+
+  // metric: {min: A, max: B}, each bound optional, metric a study read-out.
+  void read_limits(const YAML::Node& v) {
+    if (!map(v, "study.limits")) return;
+    for (const auto& kv : v) {
+      StudyLimit limit;
+      limit.metric = kv.first.as<std::string>();
+      limit.pos = pos_of(kv.first);
+      if (!find_study_metric(limit.metric)) {
+        unknown(kv.first, limit.metric, study_metric_keys(), "study read-out");
+        continue;
+      }
+      if (!map(kv.second, "study.limits." + limit.metric)) continue;
+      for (const auto& bound : kv.second) {
+        const std::string key = bound.first.as<std::string>();
+        if (key != "min" && key != "max") {
+          unknown(bound.first, key, kLimitKeys, "limit key");
+          continue;
+        }
+        double value = 0.0;
+        if (!bound.second.IsScalar() || !YAML::convert<double>::decode(bound.second, value)) {
+          d_.add(pos_of(bound.second),
+                 "study.limits." + limit.metric + "." + key + " must be a number");
+          continue;
+        }
+        (key == "min" ? limit.min : limit.max) = value;
+      }
+      if (limit.min || limit.max) spec_.study.limits.push_back(limit);
     }
   }
 

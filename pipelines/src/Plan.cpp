@@ -64,6 +64,8 @@ class Planner {
       : spec_(spec), options_(options), d_(d) {
     plan_.name = spec.name;
     plan_.file = spec.file;
+    plan_.question = spec.study.question;
+    plan_.limits = spec.study.limits;
     const fs::path base = spec.file.parent_path();
     plan_.workdir = options.workdir_override.empty()
                         ? (base / spec.workdir).lexically_normal()

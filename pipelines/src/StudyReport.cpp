@@ -7,6 +7,8 @@
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/Log.h"
+#include "vesica/pipelines/CapacityStress.h"
 #include "vesica/pipelines/StudyPage.h"
 
 namespace fs = std::filesystem;
@@ -25,13 +27,13 @@ std::string number(double v) {
   return buf;
 }
 
-std::string number(const std::optional<double>& v) {
-  return v ? number(*v) : "";
+std::optional<double> json_number(const nlohmann::json& j, const char* key) {
+  if (!j.is_object() || !j.contains(key) || !j[key].is_number()) return std::nullopt;
+  return j[key].get<double>();
 }
 
-std::string summary_number(const nlohmann::json& summary, const char* key) {
-  if (!summary.is_object() || !summary.contains(key) || !summary[key].is_number()) return "";
-  return number(summary[key].get<double>());
+std::string cell(const StudyValue& v) {
+  return v.value ? (v.above ? ">" : "") + number(*v.value) : "";
 }
 
 // A CSV cell: quoted when it holds a comma, a quote or a line break.
@@ -65,6 +67,15 @@ std::string failure_in_run(const RunResult& run, const std::vector<std::size_t>&
              (o.last_line.empty() ? "" : ": " + o.last_line);
   }
   return "";
+}
+
+// The wall stress at capacity, asked of vesica-compare beside the simulate executable.
+void read_capacity_stress(const PlannedStage& simulate, StudyRow& row) {
+  if (row.status != "ok") return;
+  std::string why;
+  row.capacity_stress =
+      capacity_stress(simulate.executable.parent_path() / "vesica-compare", row.simulation, why);
+  if (!why.empty()) log()->warn("{}: no wall stress at capacity: {}", row.variant, why);
 }
 
 void read_outputs(StudyRow& row) {
@@ -112,8 +123,11 @@ StudyReport StudyReport::collect(const Plan& plan, const RunResult* run) {
     row.simulation = plan.in_workdir(s.output);
     read_outputs(row);
     decide_status(row, run ? failure_in_run(*run, chain) : "");
+    read_capacity_stress(s, row);
     report.rows_.push_back(std::move(row));
   }
+  report.question_ = plan.question;
+  report.limits_ = plan.limits;
   return report;
 }
 
@@ -136,38 +150,86 @@ std::vector<std::string> StudyReport::varied_parameters() const {
   return varied;
 }
 
-std::vector<std::pair<std::string, std::string>> StudyReport::metrics(const StudyRow& row) {
+std::vector<std::string> StudyReport::distinct_parameters(
+    std::vector<std::pair<std::string, std::string>>* repeats) const {
+  // a and b repeat each other when equal values of a go with equal values of b and back
+  auto same_partition = [&](const std::string& a, const std::string& b) {
+    for (const auto& r1 : rows_)
+      for (const auto& r2 : rows_)
+        if ((parameter(r1, a) == parameter(r2, a)) != (parameter(r1, b) == parameter(r2, b)))
+          return false;
+    return true;
+  };
+  std::vector<std::string> kept;
+  for (const auto& k : varied_parameters()) {
+    const auto first = std::find_if(kept.begin(), kept.end(),
+                                    [&](const std::string& e) { return same_partition(e, k); });
+    if (first == kept.end())
+      kept.push_back(k);
+    else if (repeats)
+      repeats->emplace_back(k, *first);
+  }
+  return kept;
+}
+
+std::string StudyReport::parameter(const StudyRow& row, const std::string& key) const {
+  for (const auto& [k, v] : row.parameters)
+    if (k == key) return v;
+  return "";
+}
+
+StudyValues StudyReport::values(const StudyRow& row) {
   const CystometryCurve empty;
   const CystometryCurve& c = row.curve ? *row.curve : empty;
-  std::string capacity = number(filling_volume_at_pdet(c, kCapacityPdetCmh2o));
-  if (capacity.empty() && c.size() > 0) capacity = ">" + number(c.volume_ml[c.filling_end()]);
-  return {{"pdet_at_300ml_cmh2o", number(filling_pdet_at_volume(c, kLowVolumeMl))},
-          {"pdet_at_500ml_cmh2o", number(filling_pdet_at_volume(c, kHighVolumeMl))},
-          {"max_pdet_cmh2o", number(max_pdet(c))},
-          {"compliance_ml_per_cmh2o", number(filling_compliance(c))},
+  StudyValue capacity{filling_volume_at_pdet(c, kCapacityPdetCmh2o)};
+  if (!capacity.value && c.size() > 0) capacity = {c.volume_ml[c.filling_end()], true};
+  const nlohmann::json stress =
+      row.capacity_stress.is_object() ? row.capacity_stress["summary"] : nlohmann::json();
+  return {{"pdet_at_300ml_cmh2o", {filling_pdet_at_volume(c, kLowVolumeMl)}},
+          {"pdet_at_500ml_cmh2o", {filling_pdet_at_volume(c, kHighVolumeMl)}},
+          {"max_pdet_cmh2o", {max_pdet(c)}},
+          {"compliance_ml_per_cmh2o", {filling_compliance(c)}},
           {"capacity_at_40cmh2o_ml", capacity},
-          {"qmax_ml_s", number(voiding_qmax(c))},
+          {"qmax_ml_s", {voiding_qmax(c)}},
           // A residual only when voiding ran to its end (a failed run's summary counts
           // the volume where it stopped).
-          {"pvr_ml", row.status == "ok" ? summary_number(row.summary, "pvr_ml") : ""},
-          {"max_wall_stress_kpa", summary_number(row.summary, "max_wall_stress_kpa")}};
+          {"pvr_ml", {row.status == "ok" ? json_number(row.summary, "pvr_ml") : std::nullopt}},
+          // At capacity, not the largest of any frame: a voiding collapse puts one-element
+          // spikes into late frames.
+          {"stress_p95_at_capacity_kpa", {json_number(stress, "p95_kpa")}},
+          {"stress_max_at_capacity_kpa", {json_number(stress, "max_kpa")}}};
 }
+
+std::vector<std::pair<std::string, std::string>> StudyReport::metrics(const StudyRow& row) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& [key, value] : values(row)) out.emplace_back(key, cell(value));
+  return out;
+}
+
+std::string StudyReport::answer(const StudyRow& row) const {
+  return row.status == "ok" ? pipelines::answer(limits_, values(row)) : "";
+}
+
+namespace {
+
+std::string where_of(const StudyRow& row) {
+  if (!row.capacity_stress.is_object()) return "";
+  return row.capacity_stress["summary"].value("where", "");
+}
+
+}  // namespace
 
 std::string StudyReport::to_csv() const {
   const std::vector<std::string> varied = varied_parameters();
-  std::string csv = "variant,status";
+  std::string csv = "variant,status,answer";
   for (const auto& k : varied) csv += "," + csv_cell(k);
-  for (const auto& [name, value] : metrics(StudyRow{})) csv += "," + name;
-  csv += ",failure\n";
+  for (const auto& m : study_metrics()) csv += std::string(",") + m.key;
+  csv += ",stress_max_where,failure\n";
   for (const auto& r : rows_) {
-    csv += csv_cell(r.variant) + "," + r.status;
-    for (const auto& k : varied) {
-      std::string value;
-      for (const auto& [rk, rv] : r.parameters)
-        if (rk == k) value = rv;
-      csv += "," + csv_cell(value);
-    }
+    csv += csv_cell(r.variant) + "," + r.status + "," + answer(r);
+    for (const auto& k : varied) csv += "," + csv_cell(parameter(r, k));
     for (const auto& [name, value] : metrics(r)) csv += "," + csv_cell(value);
+    csv += "," + csv_cell(where_of(r));
     csv += "," + csv_cell(r.status == "ok" ? "" : r.failure) + "\n";
   }
   return csv;

@@ -292,7 +292,11 @@ void CystometryProtocol::frame(bool force) {
   const auto stresses = model_->wall_stresses();
   for (const auto& s : stresses) max_stress_ = std::max(max_stress_, s.sigma1);
   const bool write = series_ && (force ? last_frame_ < time_ : true);
-  if (write) series_->add_step(time_, model_->wall(), model_->wall_positions(), stresses);
+  if (write)
+    series_->add_step(time_,
+                      {units::ml_from_m3(model_->volume()),
+                       units::cmh2o_from_pa(model_->pves() - loads_at(time_).pabd_pa)},
+                      model_->wall(), model_->wall_positions(), stresses);
   model_->add_frame(time_, write);
   last_frame_ = time_;
   next_frame_ = time_ + (voiding_ ? rules_.void_frame_interval_s : options_.series_interval_s);

@@ -34,12 +34,18 @@ io::VtuGrid wall_frame(const WallModel& wall, const std::vector<Eigen::Vector3d>
 }
 
 VtuSeriesWriter::VtuSeriesWriter(std::filesystem::path folder)
-    : series_(std::move(folder), "series") {}
+    : series_(std::move(folder), "series") {
+  series_.set_paraview_script(
+      {"cauchy_principal_kpa", 0, "max principal Cauchy stress sigma1 (kPa)", "region", 2});
+}
 
-void VtuSeriesWriter::add_step(double time_s, const WallModel& wall,
+void VtuSeriesWriter::add_step(double time_s, const FrameState& state, const WallModel& wall,
                                const std::vector<Eigen::Vector3d>& x,
                                const std::vector<MembraneStressOutput>& stresses) {
-  series_.add_step(time_s, wall_frame(wall, x, stresses));
+  io::VtuGrid frame = wall_frame(wall, x, stresses);
+  frame.field_data = {{"volume_ml", 1, {state.volume_ml}, false},
+                      {"pdet_cmh2o", 1, {state.pdet_cmh2o}, false}};
+  series_.add_step(time_s, std::move(frame));
 }
 
 void VtuSeriesWriter::finish() {

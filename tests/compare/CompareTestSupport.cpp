@@ -7,6 +7,7 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -22,7 +23,7 @@
 
 namespace vesica::test {
 
-void write_stress_sphere(const std::filesystem::path& vtu) {
+double write_stress_sphere(const std::filesystem::path& vtu) {
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(40);
   sphere->SetThetaResolution(32);
@@ -30,13 +31,22 @@ void write_stress_sphere(const std::filesystem::path& vtu) {
   sphere->Update();
   vtkPolyData* poly = sphere->GetOutput();
   vtkNew<vtkDoubleArray> stress;
-  stress->SetName("max_principal_stress_kpa");
+  stress->SetName("cauchy_principal_kpa");
+  stress->SetNumberOfComponents(2);
+  vtkNew<vtkIntArray> region;
+  region->SetName("region");
+  double largest = 0.0;
   for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c) {
     double bounds[6];
     poly->GetCellBounds(c, bounds);
-    stress->InsertNextValue(10 + 0.1 * (bounds[4] + bounds[5]));
+    const bool outlet = bounds[5] < -39.0;
+    const double sigma1 = outlet ? 0.0 : 10 + 0.1 * (bounds[4] + bounds[5]);
+    stress->InsertNextTuple2(sigma1, 0.75 * sigma1);
+    region->InsertNextValue(outlet ? 2 : 1);
+    if (!outlet) largest = std::max(largest, sigma1);
   }
   poly->GetCellData()->AddArray(stress);
+  poly->GetCellData()->AddArray(region);
   vtkNew<vtkAppendFilter> grid;
   grid->AddInputData(poly);
   grid->Update();
@@ -44,6 +54,7 @@ void write_stress_sphere(const std::filesystem::path& vtu) {
   writer->SetFileName(vtu.c_str());
   writer->SetInputData(grid->GetOutput());
   writer->Write();
+  return largest;
 }
 
 long write_label_surface(const std::filesystem::path& nifti, const std::filesystem::path& vtp,

@@ -28,9 +28,12 @@ inline std::string compare_exe() {
   return (bin_dir() / "vesica-compare").string();
 }
 
-// A sphere of triangles (radius 40 mm) with a cell array "max_principal_stress_kpa" that
-// grows with height, written as .vtu.
-void write_stress_sphere(const std::filesystem::path& vtu);
+// A sphere of triangles (radius 40 mm) written as .vtu like a frame of vesica-simulate's
+// series: cell data "cauchy_principal_kpa" = (σ1, σ2) with σ1 = 10 + 0.1 (z_min + z_max)
+// of the triangle (kPa, growing with height) and σ2 = 0.75 σ1, so that the vector magnitude
+// of the pair (1.25 σ1) is told apart from σ1; "region" 1, and 2 (outlet, zero stress) on
+// the lowest triangles. Returns the largest σ1 of the wall (non-outlet) triangles.
+double write_stress_sphere(const std::filesystem::path& vtu);
 
 // The closed surface of a label map (label 1) as a .vtp in mm with field data units = mm:
 // discrete flying edges, windowed-sinc smoothing, quadric decimation to about

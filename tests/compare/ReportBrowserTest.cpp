@@ -1,6 +1,9 @@
-// The report in a real browser: Debian's chromium, headless, loads index.html; the DOM
-// after load must hold every plot with drawn marks, no script error, the embedded
-// wall-stress picture; the screenshot must not be blank.
+// The report in a real browser, as a urologist opens it: Debian's chromium, headless, in a
+// 1280-px window. After load the page must hold the trace, the three plots (each with drawn
+// data), the parameter and criteria tables and the wall-stress picture; no script error;
+// no element wider than the window; no debug text. report.pdf, printed by the same
+// chromium, must be a PDF of several A4 pages. The screenshot, the page and the PDF stay in
+// build/test-artefacts/report for a look.
 #include <regex>
 #include <set>
 
@@ -52,9 +55,16 @@ Ink ink_of(const fs::path& png) {
   return ink;
 }
 
+// The value of a data-* attribute of <body> in the dumped DOM.
+std::string body_data(const std::string& dom, const std::string& name) {
+  std::smatch m;
+  const std::regex re("<body[^>]*\\sdata-" + name + "=\"([^\"]*)\"");
+  return std::regex_search(dom, m, re) ? m[1].str() : "";
+}
+
 }  // namespace
 
-TEST(ReportBrowser, EveryPlotRendersWithoutErrors) {
+TEST(ReportBrowser, TheReportFitsA1280WindowWithEveryPartDrawnAndPrints) {
   if (run_command("command -v chromium").exit_code != 0) {
     if (running_in_ci()) FAIL() << "chromium is not installed";
     GTEST_SKIP() << "chromium is not installed";
@@ -67,31 +77,55 @@ TEST(ReportBrowser, EveryPlotRendersWithoutErrors) {
                   (dir / "wall.vtu").string() + " -o " + (dir / "report").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const fs::path page = dir / "report" / "index.html";
+  const fs::path keep = artefact_dir("report");
+  fs::copy_file(page, keep / "index.html");
 
   const auto dom = run_command(chromium(dir / "profile1") +
-                               " --enable-logging=stderr --v=0 --dump-dom file://" + page.string());
+                               " --window-size=1280,900 --enable-logging=stderr --v=0 "
+                               "--dump-dom file://" +
+                               page.string());
   ASSERT_EQ(dom.exit_code, 0) << dom.output;
   EXPECT_EQ(dom.output.find("Uncaught"), std::string::npos) << dom.output;
   EXPECT_FALSE(std::regex_search(dom.output, std::regex("CONSOLE.*[Ee]rror"))) << dom.output;
-  EXPECT_NE(dom.output.find("<pre id=\"js-errors\"></pre>"), std::string::npos);
-  // the page's load handler counted the plots with visible series
-  EXPECT_NE(dom.output.find("plots=4 drawn=4"), std::string::npos) << dom.output.substr(0, 2000);
-  for (const char* id : {"plot-filling", "plot-volume", "plot-flow", "plot-pressure-flow"}) {
+  EXPECT_NE(dom.output.find("<pre id=\"js-errors\" hidden=\"\"></pre>"), std::string::npos);
+  // every plot drew its data; nothing sticks out of the 1280-px window
+  EXPECT_EQ(body_data(dom.output, "plots"), "4") << dom.output.substr(0, 3000);
+  EXPECT_EQ(body_data(dom.output, "drawn"), "4");
+  EXPECT_EQ(body_data(dom.output, "overflowing"), "0");
+  EXPECT_EQ(body_data(dom.output, "window-width"), "1280");
+  EXPECT_EQ(body_data(dom.output, "scroll-width"), "1280");
+  for (const char* id : {"plot-trace", "plot-filling", "plot-flow", "plot-pressure-flow"}) {
     const auto at = dom.output.find(std::string("id=\"") + id + "\"");
     ASSERT_NE(at, std::string::npos) << id;
-    const auto end = dom.output.find("</svg>", at);
-    const std::string svg = dom.output.substr(at, end - at);
-    EXPECT_TRUE(svg.find("class=\"series\"") != std::string::npos) << id << " has no data";
+    const std::string svg = dom.output.substr(at, dom.output.find("</svg>", at) - at);
+    EXPECT_NE(svg.find("class=\"series\""), std::string::npos) << id << " has no data";
   }
-  EXPECT_NE(dom.output.find("id=\"wall-stress\""), std::string::npos)
-      << "no embedded wall-stress picture";
+  for (const char* id :
+       {"id=\"parameters\"", "id=\"criteria\"", "id=\"wall-stress\"", "id=\"wall-stress-numbers\""})
+    EXPECT_NE(dom.output.find(id), std::string::npos) << id;
+  // no debug text such as the former "plots=4 drawn=4"
+  EXPECT_FALSE(std::regex_search(dom.output, std::regex("(plots|drawn)=[0-9]")));
+  // the pressure-flow axes fit the data (Pdet up to 18 cmH2O), not a fixed 150
+  const auto pf = dom.output.find("id=\"plot-pressure-flow\"");
+  const std::string pf_svg = dom.output.substr(pf, dom.output.find("</svg>", pf) - pf);
+  EXPECT_EQ(pf_svg.find(">150<"), std::string::npos);
 
-  const fs::path shot = dir / "shot.png";
-  const auto s = run_command(chromium(dir / "profile2") + " --window-size=1200,2400 --screenshot=" +
+  const fs::path shot = keep / "report-1280.png";
+  const auto s = run_command(chromium(dir / "profile2") + " --window-size=1280,4200 --screenshot=" +
                              shot.string() + " file://" + page.string());
   ASSERT_EQ(s.exit_code, 0) << s.output;
   ASSERT_TRUE(fs::exists(shot)) << s.output;
   const Ink ink = ink_of(shot);
   EXPECT_GT(ink.fraction, 0.02);
   EXPECT_GT(ink.colours, 8);
+
+  const fs::path pdf = dir / "report" / "report.pdf";
+  ASSERT_TRUE(fs::exists(pdf)) << read_text(dir / "report" / "metrics.json");
+  fs::copy_file(pdf, keep / "report.pdf");
+  const std::string bytes = read_text(pdf);
+  EXPECT_EQ(bytes.rfind("%PDF-", 0), 0u);
+  std::smatch pages;
+  ASSERT_TRUE(std::regex_search(bytes, pages, std::regex("/Count ([0-9]+)")));
+  EXPECT_GE(std::stoi(pages[1]), 2);
+  EXPECT_NE(bytes.find("/MediaBox [0 0 594.9"), std::string::npos) << "not A4";
 }

@@ -53,6 +53,22 @@ TEST(SvgPlot, NaNBreaksALine) {
   EXPECT_EQ(std::count(path.begin(), path.begin() + path.find("/>"), 'M'), 2);
 }
 
+TEST(SvgPlot, ALineAlongTheTopTickIsNotHiddenByTheFrame) {
+  // Pdet 0..25 cmH2O: ticks every 5; a plateau at 25 would lie on the frame's top edge, so
+  // the axis goes one step on, to 30, and the plateau is drawn at 34 + 318 (1 - 25/30) = 87.
+  SvgPlot top("plateau", "Q (ml/s)", "Pdet (cmH2O)");
+  top.add_line("sim", {0, 5, 10}, {0, 25, 25});
+  const std::string svg = top.render();
+  EXPECT_NE(svg.find(">30<"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("87.00"), std::string::npos) << svg;
+  // a series below the top tick keeps the tight axis: 0..24 ends at 25
+  SvgPlot below("below", "Q (ml/s)", "Pdet (cmH2O)");
+  below.add_line("sim", {0, 5, 10}, {0, 24, 24});
+  const std::string tight = below.render();
+  EXPECT_NE(tight.find(">25<"), std::string::npos);
+  EXPECT_EQ(tight.find(">30<"), std::string::npos);
+}
+
 TEST(SvgPlot, AMillionPointRecordingIsDrawnWithAFewThousandKeepingItsPeak) {
   // Default 720 x 400: y = 90 of [0, 100] is at 34 + 318 - 0.9 * 318 = 65.80 px.
   std::vector<double> x(1000000), y(1000000, 10.0);

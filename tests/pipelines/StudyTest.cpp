@@ -4,6 +4,7 @@
 
 #include "PipelineTestSupport.h"
 #include "vesica/pipelines/Plan.h"
+#include "vesica/pipelines/StudyAnswer.h"
 #include "vesica/pipelines/StudyReport.h"
 
 namespace fs = std::filesystem;
@@ -125,15 +126,62 @@ TEST(Study, TableHasOneRowPerVariantWithFailures) {
   const auto report = vesica::pipelines::StudyReport::collect(plan);
   ASSERT_EQ(report.rows().size(), 3u);
   EXPECT_EQ(report.to_csv(),
-            "variant,status,sim.mu_kpa,pdet_at_300ml_cmh2o,pdet_at_500ml_cmh2o,max_pdet_cmh2o,"
-            "compliance_ml_per_cmh2o,capacity_at_40cmh2o_ml,qmax_ml_s,pvr_ml,"
-            "max_wall_stress_kpa,failure\n"
-            "mu_kpa-5,not run,5,,,,,,,,,no summary.json yet\n"
-            // 40 cmH2O between 400 ml @ 30 and 450 ml @ 50; compliance 400 ml / 60 cmH2O
-            "mu_kpa-8,ok,8,10,60,65,6.66667,425,20,439,31,\n"
+            "variant,status,answer,sim.mu_kpa,pdet_at_300ml_cmh2o,pdet_at_500ml_cmh2o,"
+            "max_pdet_cmh2o,compliance_ml_per_cmh2o,capacity_at_40cmh2o_ml,qmax_ml_s,pvr_ml,"
+            "stress_p95_at_capacity_kpa,stress_max_at_capacity_kpa,stress_max_where,failure\n"
+            "mu_kpa-5,not run,,5,,,,,,,,,,,no summary.json yet\n"
+            // 40 cmH2O between 400 ml @ 30 and 450 ml @ 50; compliance 400 ml / 60 cmH2O; no
+            // series, so no stress at capacity
+            "mu_kpa-8,ok,,8,10,60,65,6.66667,425,20,439,,,,\n"
             // never reached 300 ml; capacity above the 200 ml reached; 100 ml / 5 cmH2O
-            "mu_kpa-12,failed,12,,,5,20,>200,,,,"
+            "mu_kpa-12,failed,,12,,,5,20,>200,,,,,,"
             "\"step failed at t = 120 s, V = 200 ml: stalled\"\n");
+}
+
+// The answer to a study's question from its limits, worked by hand.
+TEST(Study, AnswerIsPassOnlyWhenEveryLimitHolds) {
+  using vesica::pipelines::StudyLimit;
+  using vesica::pipelines::StudyValue;
+  const std::vector<StudyLimit> limits = {{"pdet_at_500ml_cmh2o", std::nullopt, 40.0, {}},
+                                          {"capacity_at_40cmh2o_ml", 450.0, std::nullopt, {}}};
+  auto answer = [&](std::optional<double> pdet, StudyValue capacity) {
+    return vesica::pipelines::answer(
+        limits, {{"pdet_at_500ml_cmh2o", {pdet}}, {"capacity_at_40cmh2o_ml", capacity}});
+  };
+  EXPECT_EQ(answer(12.0, {520.0}), "pass");
+  EXPECT_EQ(answer(40.0, {450.0}), "pass");            // the limits are inclusive
+  EXPECT_EQ(answer(41.0, {520.0}), "fail");            // Pdet over 40 at 500 ml
+  EXPECT_EQ(answer(12.0, {430.0}), "fail");            // 40 cmH2O reached at 430 < 450 ml
+  EXPECT_EQ(answer(12.0, {500.0, true}), "pass");      // "> 500": never reached 40
+  EXPECT_EQ(answer(std::nullopt, {500.0, true}), "");  // 500 ml never reached: no answer
+  EXPECT_EQ(answer(41.0, {std::nullopt}), "fail");     // one failing limit decides
+  EXPECT_EQ(vesica::pipelines::limit_text(limits[0]), "Pdet at 500 ml <= 40 cmH2O");
+}
+
+TEST(Study, LimitsNameAReadOutAndNumbers) {
+  vesica::pipelines::Diagnostics d;
+  const auto spec = vesica::pipelines::parse_pipeline_text(
+      "stages:\n"
+      "  sim: {tool: simulate, output: sim}\n"
+      "study:\n"
+      "  question: Under 40 at 500 ml?\n"
+      "  limits:\n"
+      "    pdet_at_500ml_cmh2o: {max: 40}\n"
+      "    pdet_at_500_cmh2o: {max: 40}\n"
+      "    qmax_ml_s: {min: ten}\n"
+      "  matrix: {sim.mu_kpa: [1, 2]}\n",
+      "s.yaml", d);
+  EXPECT_EQ(spec.study.question, "Under 40 at 500 ml?");
+  ASSERT_EQ(spec.study.limits.size(), 1u);
+  EXPECT_EQ(spec.study.limits[0].max, 40.0);
+  const std::string text = d.format("s.yaml");
+  EXPECT_NE(text.find("s.yaml:7:5: unknown study read-out 'pdet_at_500_cmh2o' (did you mean "
+                      "'pdet_at_500ml_cmh2o'?)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("s.yaml:8:22: study.limits.qmax_ml_s.min must be a number"),
+            std::string::npos)
+      << text;
 }
 
 TEST(Study, TableNamesTheFailureOfTheRunThatJustHappened) {

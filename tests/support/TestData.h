@@ -44,6 +44,15 @@ inline std::filesystem::path scratch_dir(const std::string& name) {
   return dir;
 }
 
+// A folder in the build tree for what a test leaves to be looked at afterwards
+// (screenshots, printed reports): build/test-artefacts/<name>, emptied at the start.
+inline std::filesystem::path artefact_dir(const std::string& name) {
+  auto dir = bin_dir().parent_path() / "test-artefacts" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 // A file's whole content ("" when it cannot be read).
 inline std::string file_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -27,6 +27,8 @@ struct CompareOptions {
   std::string columns;
   std::string pressure_unit = "cmh2o";
   std::string mesh;
+  std::string sex;  // female | male; empty: from the measured recording's header
+  bool no_pdf = false;
   std::string calibrate;
   std::vector<double> fit_volume_ml;  // empty or {lo, hi}
   double fill_rate_ml_min = 0.0;      // 0 ("auto"): inferred from a time-indexed recording

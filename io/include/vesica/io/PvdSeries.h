@@ -1,13 +1,18 @@
 #pragma once
 // A ParaView time series: "<folder>/<name>.pvd" listing "<folder>/<name>/step_NNNN.vtu",
-// one VtuGrid (VtuFile.h, mm) per step with its time in seconds. Every file is written
-// atomically, and the .pvd last, so that it lists only finished steps. vesica-simulate
-// writes the wall ("series") and, at level 2, the urine ("fluid").
+// one VtuGrid (VtuFile.h, mm) per step with its time in seconds, also kept in the step's
+// field data as "time_s" (beside whatever numbers the caller put there, such as
+// "volume_ml" and "pdet_cmh2o"), so that ParaView and other readers show it. Every file is
+// written atomically, and the .pvd last, so that it lists only finished steps.
+// vesica-simulate writes the wall ("series", with view.py: ParaViewScript.h) and, at
+// level 2, the urine ("fluid").
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "vesica/io/ParaViewScript.h"
 #include "vesica/io/VtuFile.h"
 
 namespace vesica::io {
@@ -16,8 +21,11 @@ class PvdSeries {
  public:
   PvdSeries(std::filesystem::path folder, std::string name);
 
-  void add_step(double time_s, const VtuGrid& frame);
-  // Writes the .pvd (after the steps).
+  void add_step(double time_s, VtuGrid frame);
+  // Writes view.py beside the .pvd on finish(), opening the step of largest "volume_ml"
+  // (the last step when the steps have none).
+  void set_paraview_script(ParaViewColouring colouring) { colouring_ = std::move(colouring); }
+  // Writes the .pvd (after the steps), then view.py when asked for.
   void finish();
 
   std::filesystem::path pvd_path() const { return folder_ / (name_ + ".pvd"); }
@@ -27,6 +35,9 @@ class PvdSeries {
   std::filesystem::path folder_;
   std::string name_;
   std::vector<std::pair<double, std::string>> steps_;  // time (s), file relative to the .pvd
+  std::vector<std::string> fields_;                    // field-data names of the steps
+  double largest_volume_ml_ = -1.0, largest_volume_time_s_ = 0.0;
+  std::optional<ParaViewColouring> colouring_;
 };
 
 // The .pvd collection text of (time in s, file relative to the .pvd) steps.

@@ -6,6 +6,8 @@
 //  - the mesh file of vesica-mesh (beside its .msh): triangles then tetrahedra; cell data
 //    "region" (Int32, tetrahedra 10), "thickness_mm" (Float64, tetrahedra 0), "fiber1",
 //    "fiber2" (3-vectors, tetrahedra 0).
+// Field data (one tuple for the whole grid) holds numbers only, such as a series step's
+// "time_s", "volume_ml" and "pdet_cmh2o", besides the "units" string VTK readers check.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -29,9 +31,11 @@ struct VtuGrid {
   Eigen::MatrixXi tets;              // K x 4
   std::vector<VtuArray> point_data;  // N tuples each
   std::vector<VtuArray> cell_data;   // M + K tuples each: triangles first, then tetrahedra
+  std::vector<VtuArray> field_data;  // one tuple each (numbers only)
 
   const VtuArray* cell_array(const std::string& name) const;
   const VtuArray* point_array(const std::string& name) const;
+  const VtuArray* field_array(const std::string& name) const;
 };
 
 struct VtuWriteOptions {

@@ -3,6 +3,7 @@
 // named external inputs and an optional study. Positions are kept for error messages.
 // Loading never throws: every problem goes to a Diagnostics list.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -65,6 +66,13 @@ struct Variant {
   SourcePos pos;
 };
 
+// `study: limits:` one bound on a read-out (StudyMetrics.h): `pdet_at_500ml_cmh2o: {max: 40}`.
+struct StudyLimit {
+  std::string metric;
+  std::optional<double> min, max;
+  SourcePos pos;
+};
+
 struct StudySpec {
   // A study larger than this is refused unless the file raises `max_runs`: a few lines of
   // matrix multiply into more runs than a machine can hold (9 axes of 10 values: 10^9).
@@ -72,6 +80,8 @@ struct StudySpec {
 
   std::vector<MatrixAxis> matrix;
   std::vector<Variant> variants;
+  std::string question;            // `study: question:` the design question, in words
+  std::vector<StudyLimit> limits;  // what a variant must meet to answer it "pass"
   long long max_runs = kDefaultMaxRuns;
   SourcePos max_runs_pos;
   SourcePos pos;

@@ -35,6 +35,8 @@ struct Plan {
   std::filesystem::path workdir;  // absolute
   std::vector<PlannedStage> stages;
   std::vector<std::string> unchecked_tools;  // tools without a parameter table: params unchecked
+  std::string question;            // the study's design question (study.csv/.html)
+  std::vector<StudyLimit> limits;  // and what answers it "pass"
 
   // Index of the stage with this id, or -1.
   long index_of(const std::string& id) const;
