@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "VerificationStage.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -48,6 +49,7 @@ MaterialSpec material_spec(const SimulateSettings& c) {
     usage_error("--k1-kpa/--k2 need a material with fibers (bladder, neobladder, fibers)");
   set_kpa("k1", c.k1_kpa);
   set("k2", c.k2);
+  spec.params["beta_vol"] = c.beta_vol;  // 9, or 0: K/2 (ln J)² (docs/physics.md §2.3)
   if (c.beta.size() != c.tau_s.size())
     usage_error("--beta and --tau-s need the same number of values");
   if (!c.beta.empty() && c.material == "neo-hookean")
@@ -90,14 +92,20 @@ int main(int argc, char** argv) {
     options.output_dir = output;
     validate(p, options);  // before reading anything
     const MaterialSpec spec = material_spec(c);
-    make_material(spec);  // reject bad parameters before reading anything
+    make_material(spec);                    // reject bad parameters before reading anything
+    if (is_verification(c.verification)) {  // issue 25: P–λ of a closed wall
+      record.parameters() = table.values();
+      record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
+      return run_verification_stage(mesh, output, spec, c, record, common);
+    }
     WallModel wall;
     {
       PhaseTimer timer(record, "read");
       wall = load_wall(mesh, c.wall);
     }
     record.add_input(mesh);
-    Progress progress("simulate");  // silent with --json or off a terminal
+    export_febio_if_asked(c, wall, spec, record);  // issue 25
+    Progress progress("simulate");                 // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};

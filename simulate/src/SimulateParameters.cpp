@@ -2,6 +2,7 @@
 // the fields of SimulateSettings, whose initialisers are the defaults.
 #include "vesica/simulate/SimulateParameters.h"
 
+#include "VerificationParameters.h"
 #include "vesica/simulate/SimulateSettings.h"
 
 namespace vesica::simulate {
@@ -188,6 +189,7 @@ ParameterTable parameter_table(SimulateSettings& s) {
   add_wall_entries(s, t);
   add_protocol_entries(s.protocol, t);
   add_run_entries(s.run, t);
+  add_verification_entries(s, t);
   return t;
 }
 

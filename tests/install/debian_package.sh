@@ -24,6 +24,9 @@ missing=""
 for exe in "$work"/root/usr/bin/*; do
   for lib in $(readelf -d "$exe" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'); do
     path=$(ldd "$exe" | awk -v l="$lib" '$1 == l {print $3}')
+    # The dynamic loader (NEEDED where position-independent code reads thread-locals
+    # through __tls_get_addr): ldd shows it by its own path, without "=>".
+    [ -n "$path" ] || path=$(ldd "$exe" | awk -v l="$lib" '$1 ~ "/" l "$" {print $1}')
     [ -n "$path" ] || { echo "$exe: $lib not found"; exit 1; }
     owner=$(dpkg -S "$path" 2>/dev/null || dpkg -S "$(readlink -f "$path")" 2>/dev/null ||
             dpkg -S "${path#/usr}" 2>/dev/null || true)

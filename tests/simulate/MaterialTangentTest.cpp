@@ -136,3 +136,15 @@ TEST(MaterialStress, ReferenceStateIsStressFree) {
     EXPECT_LT(S.norm(), 1e-9) << name;
   }
 }
+
+// FEBio's volumetric law K/2 (ln J)² (beta_vol = 0) and the Ogden term at small β
+// (docs/physics.md §2.3), at K/μ = 2 and 500.
+TEST(MaterialTangent, LogSquaredVolumetricLaw) {
+  for (double K : {1e4, 2.5e6})
+    expect_consistent_tangent({"neo-hookean", {{"mu", 5e3}, {"K", K}, {"beta_vol", 0.0}}});
+}
+
+TEST(MaterialTangent, SmallBetaOgdenVolumetricTerm) {
+  for (double beta : {1e-3, 1e-4})
+    expect_consistent_tangent({"neo-hookean", {{"mu", 5e3}, {"K", 1e4}, {"beta_vol", beta}}});
+}

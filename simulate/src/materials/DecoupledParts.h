@@ -42,6 +42,8 @@ class IsochoricPart {
 // Ogden volumetric term Ψ_vol = K β⁻² (β ln J + J^(-β) - 1):
 //   S_vol = (K/β)(1 - J^(-β)) C⁻¹,
 //   D_vol = K J^(-β) C⁻¹ ⊗ C⁻¹ - 2 (K/β)(1 - J^(-β)) C⁻¹ ⊙ C⁻¹.
+// β = 0 is its limit Ψ_vol = K/2 (ln J)², the volumetric law of FEBio's uncoupled
+// materials: S_vol = K ln J C⁻¹, D_vol = K C⁻¹ ⊗ C⁻¹ - 2 K ln J C⁻¹ ⊙ C⁻¹.
 class OgdenVolumetric {
  public:
   OgdenVolumetric(double K, double beta) : K_(K), beta_(beta) {}
@@ -49,8 +51,9 @@ class OgdenVolumetric {
   double dPsi_vol_dJ(double J) const;
 
  private:
+  double J_dPsi_dJ(double log_J) const;
   double K_;
-  double beta_;
+  double beta_;  // ≥ 0
 };
 
 // Neo-Hookean matrix Ψ_iso = μ/2 (Ī1 - 3): S_iso = μ dĪ1/dC, D_iso = 2 μ d²Ī1/dC².

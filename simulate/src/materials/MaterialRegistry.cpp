@@ -1,7 +1,8 @@
 // The material registry: one line per material name. Parameters are SI (Pa, s), and every
 // one has a default here, the only place (the executables pass a parameter only when it is
 // given). All laws are the decoupled family of DecoupledMaxwell.h:
-//   neo-hookean: mu, K or K_per_mu (default K = 1000 mu), beta_vol (9)
+//   neo-hookean: mu, K or K_per_mu (default K = 1000 mu), beta_vol (9; 0 = K/2 (ln J)²,
+//                FEBio's law)
 //   maxwell:     neo-hookean + beta1..beta5, tau1..tau5 (or beta, tau for one branch);
 //                without any, the thesis's one branch beta 0.15, tau 1e-4 s
 //   fibers:      maxwell without default branches + k1 (Pa), k2 (-) on the full I4
@@ -65,7 +66,10 @@ OgdenVolumetric volumetric_from(ParamReader& p, double mu) {
   if (ratio && p.has("K")) usage_error("material parameters K and K_per_mu exclude each other");
   // Nearly incompressible by default: the wall is mostly water (docs/physics.md §2.7).
   const double K = p.has("K") ? p.positive("K", 0.0) : p.positive("K_per_mu", 1e3) * mu;
-  return OgdenVolumetric(K, p.positive("beta_vol", 9.0));
+  // beta_vol = 0: K/2 (ln J)², FEBio's volumetric law (docs/physics.md §2.3).
+  const double beta = p.get("beta_vol", 9.0);
+  if (!(beta >= 0.0)) usage_error("material parameter beta_vol must be >= 0");
+  return OgdenVolumetric(K, beta);
 }
 
 std::vector<MaxwellBranch> branches_from(ParamReader& p, std::vector<MaxwellBranch> branches) {

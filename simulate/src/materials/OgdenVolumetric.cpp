@@ -1,4 +1,5 @@
-// Ogden volumetric term and the shared decoupled kinematics (docs/physics.md §2).
+// Ogden volumetric term (with its β → 0 limit K/2 (ln J)²) and the shared decoupled
+// kinematics (docs/physics.md §2).
 #include <cmath>
 
 #include "materials/DecoupledParts.h"
@@ -25,15 +26,24 @@ IsochoricInvariant isochoric_invariant(const Kinematics& k, const Eigen::Matrix3
   return inv;
 }
 
+// J dΨ_vol/dJ = (K/β)(1 − J^(−β)) = −(K/β) expm1(−β ln J): the difference 1 − J^(−β) of two
+// numbers near 1 loses every digit below ε/(β ln J), so for β of 1e-3–1e-4 the stress had
+// no digits left for Newton's last iterations; expm1 keeps them. β = 0 is its limit,
+// K ln J: the volumetric law K/2 (ln J)² (docs/physics.md §2.3).
+double OgdenVolumetric::J_dPsi_dJ(double log_J) const {
+  return beta_ == 0.0 ? K_ * log_J : -K_ / beta_ * std::expm1(-beta_ * log_J);
+}
+
 double OgdenVolumetric::dPsi_vol_dJ(double J) const {
-  return K_ / beta_ * (1.0 - std::pow(J, -beta_)) / J;
+  return J_dPsi_dJ(std::log(J)) / J;
 }
 
 void OgdenVolumetric::S_vol(const Kinematics& k, Eigen::Matrix3d& S, Voigt6& D) const {
-  const double J_mb = std::pow(k.J, -beta_);
-  const double f = K_ / beta_ * (1.0 - J_mb);  // J dΨ_vol/dJ
+  const double log_J = std::log(k.J);
+  const double f = J_dPsi_dJ(log_J);
   S = f * k.C_inv;
-  D = K_ * J_mb * outer(k.C_inv, k.C_inv) - 2.0 * f * odot(k.C_inv);
+  // J d(J dΨ/dJ)/dJ = K J^(−β) (K at β = 0).
+  D = K_ * std::exp(-beta_ * log_J) * outer(k.C_inv, k.C_inv) - 2.0 * f * odot(k.C_inv);
 }
 
 }  // namespace vesica::simulate

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vesica/simulate/CystometrySettings.h"
+#include "vesica/simulate/VerificationSettings.h"
 #include "vesica/simulate/WallLoading.h"
 
 namespace vesica::simulate {
@@ -37,6 +38,10 @@ struct SimulateSettings {
   // One posture for both: the wall's fixed patch (WallOptions) and gravity (ProtocolSettings).
   Posture posture = Posture::Supine;
   RunOptions run;  // level, dynamics, level-2 steps, series
+  // Issue 25: the volumetric law, the verification protocols and the FEBio export.
+  double beta_vol = 9.0;  // Ogden β; 0 = K/2 (ln J)² (docs/physics.md §2.3)
+  VerificationSettings verification;
+  std::string export_feb;  // empty = none
 };
 
 }  // namespace vesica::simulate
