@@ -13,6 +13,8 @@
 #include <string>
 
 #include "vesica/compare/Artefacts.h"
+#include "vesica/compare/CalibrationRun.h"
+#include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/IcsParameters.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
@@ -61,15 +63,13 @@ std::string parameter_text(const py::handle& value) {
   return py::str(py::repr(value)).cast<std::string>();  // full precision
 }
 
-// Applies {key: value} through vesica-simulate's parameter table: the same checks, units
-// and defaults as the command line and pipeline files.
-simulate::SimulateSettings settings_from(const py::dict& params) {
-  simulate::SimulateSettings s;
-  ParameterTable table = simulate::parameter_table(s);
+// Applies {key: value} through a stage's parameter table: the same checks, units and
+// defaults as the command line and pipeline files.
+void apply_parameters(ParameterTable& table, const py::dict& params, const std::string& tool) {
   for (const auto& [key, value] : params) {
     const std::string name = py::str(key).cast<std::string>();
     const Parameter* p = table.find(name);
-    if (!p) usage_error("vesica-simulate has no parameter '" + name + "'");
+    if (!p) usage_error(tool + " has no parameter '" + name + "'");
     const std::string text = parameter_text(value);
     if (p->kind == Parameter::Kind::Flag && text.empty()) continue;  // False: not given
     try {
@@ -78,6 +78,12 @@ simulate::SimulateSettings settings_from(const py::dict& params) {
       usage_error(name + " " + e.what());
     }
   }
+}
+
+simulate::SimulateSettings settings_from(const py::dict& params) {
+  simulate::SimulateSettings s;
+  ParameterTable table = simulate::parameter_table(s);
+  apply_parameters(table, params, "vesica-simulate");
   s.wall.posture = s.protocol.posture = s.posture;  // one posture for both, as in the CLI
   s.run.reference = s.wall.reference;
   return s;
@@ -212,6 +218,33 @@ py::dict ics_parameters(const std::string& path) {
   return from_json(compare::to_json(p));
 }
 
+// vesica-compare --calibrate PARAMETERS --measured RECORDING --mesh MESH with the other
+// options as compare's parameter keys; the result as the report's calibration JSON.
+py::object calibrate(const std::string& mesh, const std::string& measured,
+                     const std::string& parameters, const py::dict& options) {
+  compare::CompareOptions o;
+  ParameterTable table = compare::parameter_table(o);
+  apply_parameters(table, options, "vesica-compare");
+  o.mesh = mesh;
+  o.measured = measured;
+  o.calibrate = parameters;
+  io::ReaderOptions reader;
+  reader.columns = io::parse_column_map(o.columns);
+  reader.pressure_unit = o.pressure_unit;
+  const compare::RecordingAnalysis recording =
+      compare::analyse(io::read_recording(measured, reader), o.artefacts,
+                       compare::RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
+  compare::ComparisonOptions comparison;
+  if (!o.fit_volume_ml.empty())
+    comparison.volume_range_ml = {o.fit_volume_ml[0], o.fit_volume_ml[1]};
+  compare::CalibrationResult result;
+  {
+    py::gil_scoped_release release;  // many simulations: other Python threads may run
+    result = compare::calibrate_from_options(o, recording, comparison);
+  }
+  return from_json(compare::to_json(result));
+}
+
 }  // namespace
 
 PYBIND11_MODULE(vesica, m) {
@@ -248,6 +281,11 @@ PYBIND11_MODULE(vesica, m) {
       "read_recording",
       [](const std::string& path) { return recording_columns(io::read_recording(path)); },
       py::arg("path"), "A urodynamic recording (CSV) as columns");
+  m.def("calibrate", &calibrate, py::arg("mesh"), py::arg("measured"), py::arg("parameters"),
+        py::arg("options") = py::dict(),
+        "Fits the model on the mesh to a recording, as vesica-compare --calibrate does: "
+        "parameters 'mu,p_open,...', options: vesica-compare's parameter keys. Returns the "
+        "fit (each parameter with its interval and identifiability, series, baselines)");
   m.def("ics_parameters", &ics_parameters, py::arg("path"),
         "The ICS parameters of a recording or a history.csv, as vesica-compare computes them");
 }

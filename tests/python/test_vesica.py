@@ -13,7 +13,7 @@ import pytest
 import vesica
 
 BIN = os.environ.get("VESICA_BIN_DIR", "build/bin")
-MATERIAL = {"name": "neo-hookean", "mu": 5e3, "K_per_mu": 1000.0}  # vesica-simulate's default
+MATERIAL = {"name": "neo-hookean", "mu": 5e3, "K_per_mu": 1000.0}  # --material neo-hookean --mu-kpa 5
 PROTOCOL = {"start_ml": 50, "capacity_ml": 120, "fill_rate_ml_min": 50, "no_void": True}
 
 
@@ -34,7 +34,8 @@ def sphere(tmp_path_factory):
 
 def test_python_cystometry_equals_the_command_line(sphere, tmp_path):
     out = tmp_path / "cli"
-    cli = json.loads(tool("vesica-simulate", sphere, "-o", out, "--start-ml", 50,
+    cli = json.loads(tool("vesica-simulate", sphere, "-o", out, "--material", "neo-hookean",
+                          "--mu-kpa", 5, "--start-ml", 50,
                           "--capacity-ml", 120, "--fill-rate-ml-min", 50, "--no-void",
                           "--no-series", "--json"))
     wall = vesica.load_wall(str(sphere))
@@ -51,7 +52,9 @@ def test_python_cystometry_equals_the_command_line(sphere, tmp_path):
     np.testing.assert_allclose(history["pdet_cmh2o"],
                                history["pves_cmh2o"] - history["pabd_cmh2o"], atol=1e-9)
     # The same history as the CLI's file, column by column.
-    cli_history = np.genfromtxt(out / "history.csv", delimiter=",", names=True)
+    # history.csv opens with comment lines (what voided it); the column names follow them.
+    lines = [l for l in (out / "history.csv").read_text().splitlines() if not l.startswith("#")]
+    cli_history = np.genfromtxt(lines, delimiter=",", names=True)
     np.testing.assert_allclose(history["volume_ml"], cli_history["volume_ml"], rtol=1e-6)
 
     # ICS parameters of the CLI's history: its capacity is the protocol's.
@@ -75,3 +78,27 @@ def test_bad_parameters_raise_with_the_option_named(sphere):
         vesica.run_cystometry(wall, MATERIAL, {"capacity_mll": 100})
     with pytest.raises(vesica.Error, match="mu"):
         vesica.run_cystometry(wall, {"name": "neo-hookean", "mu": -1.0}, PROTOCOL)
+
+
+def test_python_calibration_equals_the_command_line(sphere, tmp_path):
+    # vesica-compare --calibrate and vesica.calibrate on the same wall and recording: the
+    # same fitted mu, RMSE and verdict, and the fit carries its interval and baselines.
+    mesh = tmp_path / "wall.msh"
+    tool("vesica-mesh", sphere, "-o", mesh)
+    wall = str(mesh.with_suffix(".vtu"))
+    recording = os.path.join(os.path.dirname(__file__), "..", "..", "pipelines", "data",
+                             "normal-female-34y.csv")
+    cli = json.loads(tool("vesica-compare", "--measured", recording, "--mesh", wall,
+                          "--calibrate", "mu", "--max-simulations", 8, "--no-pdf",
+                          "-o", tmp_path / "report", "--json"))
+    fit = vesica.calibrate(wall, recording, "mu", {"max_simulations": 8})
+    mu = fit["parameters"][0]
+    assert mu["name"] == "mu"
+    assert mu["value"] == pytest.approx(cli["fitted_mu"], rel=1e-12)
+    assert fit["rmse_cmh2o"] == pytest.approx(cli["fit_rmse_cmh2o"], rel=1e-12)
+    assert fit["status"] == cli["fit_status"]
+    assert mu["ci95_low"] <= mu["value"] <= mu["ci95_high"]
+    filling = fit["series"][0]
+    assert {"rmse", "constant_baseline_rmse", "line_baseline_rmse"} <= set(filling)
+    with pytest.raises(vesica.Error, match="max_simulation"):
+        vesica.calibrate(wall, recording, "mu", {"max_simulation": 8})
