@@ -46,8 +46,10 @@ phases = s.get("phase_compute_s", {})
 # Simulated durations: filling from the infused volume at 50 ml/min; voiding from the
 # history's last row after capacity.
 filling_sim = (s.get("capacity_ml", 50.0) - 50.0) / 50.0 * 60.0
-rows = open(f"{work}/level2/history.csv").read().split("\n")[1:]
-end_time = max(float(r.split(",")[0]) for r in rows if r.strip())
+# history.csv: comment lines (which drive voided), the column names, then the rows.
+rows = [r for r in open(f"{work}/level2/history.csv").read().split("\n")
+        if r.strip() and not r.startswith("#")][1:]
+end_time = max(float(r.split(",")[0]) for r in rows)
 voiding_sim = max(0.0, end_time - filling_sim)
 compute = sum(v for v in phases.values() if v)
 ratio = lambda sim, comp: sim / comp if comp else None

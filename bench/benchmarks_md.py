@@ -123,16 +123,22 @@ def cystometry(d):
 
 def level2(d):
     newton = d.get("newton") or {}
+    voided = (d.get("voiding_simulated_s") or 0) > 1.0  # seconds; a rounding residue is none
+    voiding = (join(f"voiding {seconds(d.get('voiding_s'))}",
+                    f"simulated/compute {num(d.get('filling_simulated_per_compute'), 3)} filling, "
+                    f"{num(d.get('cystometry_simulated_per_compute'), 3)} whole cystometry",
+                    f"Qmax {num(d.get('qmax_ml_s'), 4)} ml/s")
+               if voided else
+               join("filling only (LEVEL2_NO_VOID): no voiding measured",
+                    f"simulated/compute {num(d.get('filling_simulated_per_compute'), 3)} filling"))
     return (f"{num(d.get('triangles'))} triangles, {num(d.get('tetrahedra'))} tetrahedra",
             d.get("filling_s"), d.get("filling_target_s"),
-            join(f"voiding {seconds(d.get('voiding_s'))}", f"end to end {seconds(d.get('total_s'))}",
-                 f"simulated/compute {num(d.get('filling_simulated_per_compute'), 3)} filling, "
-                 f"{num(d.get('cystometry_simulated_per_compute'), 3)} whole cystometry",
+            join(voiding, f"end to end {seconds(d.get('total_s'))}",
                  f"{num(newton.get('mean_iterations_per_step'))} Newton iterations a step",
                  f"{num(newton.get('seconds_per_step'))} s a step",
                  f"{d.get('remeshes', '?')} remeshes",
+                 f"mass balance {num(d.get('mass_balance_error_max_rel'), 2)}",
                  f"Pdet at capacity {num(d.get('pdet_at_capacity_cmh2o'), 5)} cmH2O",
-                 f"Qmax {num(d.get('qmax_ml_s'), 4)} ml/s",
                  None if d.get("completed", True) else f"failed: {d.get('failure')}"))
 
 
@@ -186,6 +192,21 @@ def study(d):
             join(f"{ok} of {len(variants)} variants ok", f"no-op rerun {seconds(d.get('noop_run_s'))}"))
 
 
+def verification(runs):
+    by_law = {("ln J" if r.get("beta_vol") == 0 else f"Ogden β = {num(r.get('beta_vol'))}"): r
+              for r in runs}
+    measured = max((r.get("seconds") or 0) for r in runs)
+    details = join(*[f"{law}: {seconds(r.get('seconds'))}, {r.get('newton_iterations')} Newton "
+                     f"iterations, {r.get('foundation_iterations')} on the foundation"
+                     + ("" if r.get("completed") else ", did not complete")
+                     for law, r in by_law.items()])
+    return f"{runs[0].get('triangles'):,} triangles, 20 pressure steps", measured, None, details
+
+
+def pressure_steps_of(triangles):
+    return lambda d: [r for r in d.get("pressure_steps", []) if r.get("triangles") == triangles] or None
+
+
 CASES = [
     ("segment", "phantom_512x512x300_0p8mm", "segment: read + segment a phantom DICOM series", segment_phantom, True),
     ("segment", "mr_512x512x40_0p7x0p7x3p5mm", "segment: read + segment a T2 MR phantom DICOM series (bias field, noise)", segment_mr, True),
@@ -205,6 +226,10 @@ CASES = [
     ("pipelines", "demo", "vesica run: no-op of the finished demo", pipelines_demo, False),
     ("study", None, "vesica run: neobladder what-if study from nothing", study, True),
 ]
+for _triangles in (2312, 9800, 39200):
+    CASES.append(("verification", pressure_steps_of(_triangles),
+                  "simulate --protocol pressure-steps: sphere to 95 % of the limit, both volumetric laws",
+                  verification, False))
 
 
 def load(path):
@@ -234,6 +259,8 @@ def rows(bench_dir):
         item = data
         if reason is None and key == "demo":
             item = data if data.get("demo_noop_run_s") is not None else None
+        elif reason is None and callable(key):
+            item = key(data)
         elif reason is None and key is not None:
             item = data.get(key)
         if reason is None and item is None:
