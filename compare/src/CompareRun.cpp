@@ -141,12 +141,23 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
 
 }  // namespace
 
+RecordingAnalysis analyse_measured(const CompareOptions& o) {
+  io::ReaderOptions reader;
+  reader.columns = io::parse_column_map(o.columns);
+  reader.pressure_unit = o.pressure_unit;
+  return analyse(io::read_recording(o.measured, reader), o.artefacts,
+                 RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
+}
+
+ComparisonOptions comparison_options(const CompareOptions& o) {
+  ComparisonOptions c;
+  if (!o.fit_volume_ml.empty()) c.volume_range_ml = {o.fit_volume_ml[0], o.fit_volume_ml[1]};
+  return c;
+}
+
 int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, char** argv) {
   validate(o);
   StageRecord record("vesica-compare", argc, argv);  // StageRecord drops argv[0] itself
-  io::ReaderOptions measured_reader;
-  measured_reader.columns = io::parse_column_map(o.columns);
-  measured_reader.pressure_unit = o.pressure_unit;
 
   ReportInputs in;
   in.patient = patient_facts(o);
@@ -155,9 +166,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
   {
     PhaseTimer t(record, "read_and_analyse");
     if (!o.measured.empty()) {
-      measured = std::make_unique<RecordingAnalysis>(
-          analyse(io::read_recording(o.measured, measured_reader), o.artefacts,
-                  RecordingFacts{o.fill_rate_ml_min, o.capacity_ml}));
+      measured = std::make_unique<RecordingAnalysis>(analyse_measured(o));
       keep_classes_of_sex(measured->ics, in.patient.sex);
       record.add_input(o.measured);
     }
@@ -169,8 +178,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
       record.add_input(o.simulated);
     }
   }
-  ComparisonOptions copt;
-  if (!o.fit_volume_ml.empty()) copt.volume_range_ml = {o.fit_volume_ml[0], o.fit_volume_ml[1]};
+  const ComparisonOptions copt = comparison_options(o);
   nlohmann::json comparison;
   if (measured && simulated)
     comparison = compare_models(measured->recording, measured->ics, measured->filling,

@@ -15,6 +15,7 @@
 #include "vesica/compare/Artefacts.h"
 #include "vesica/compare/CalibrationRun.h"
 #include "vesica/compare/CompareParameters.h"
+#include "vesica/compare/CompareRun.h"
 #include "vesica/compare/IcsParameters.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
@@ -228,15 +229,8 @@ py::object calibrate(const std::string& mesh, const std::string& measured,
   o.mesh = mesh;
   o.measured = measured;
   o.calibrate = parameters;
-  io::ReaderOptions reader;
-  reader.columns = io::parse_column_map(o.columns);
-  reader.pressure_unit = o.pressure_unit;
-  const compare::RecordingAnalysis recording =
-      compare::analyse(io::read_recording(measured, reader), o.artefacts,
-                       compare::RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
-  compare::ComparisonOptions comparison;
-  if (!o.fit_volume_ml.empty())
-    comparison.volume_range_ml = {o.fit_volume_ml[0], o.fit_volume_ml[1]};
+  const compare::RecordingAnalysis recording = compare::analyse_measured(o);
+  const compare::ComparisonOptions comparison = compare::comparison_options(o);
   compare::CalibrationResult result;
   {
     py::gil_scoped_release release;  // many simulations: other Python threads may run

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "vesica/compare/Artefacts.h"
+#include "vesica/compare/ModelComparison.h"
+#include "vesica/compare/RecordingAnalysis.h"
 #include "vesica/core/StageMain.h"
 
 namespace vesica::compare {
@@ -37,6 +39,13 @@ struct CompareOptions {
   CalibrationModel simulation;
   int max_simulations = 40;
 };
+
+// The measured recording as the options read it (--columns, --pressure-unit) and analysed
+// with their artefact rules, fill rate and capacity.
+RecordingAnalysis analyse_measured(const CompareOptions& options);
+
+// The model-against-measurement options the command line gives (--fit-volume-ml).
+ComparisonOptions comparison_options(const CompareOptions& options);
 
 // Returns the exit code; throws vesica::Error on bad input before writing anything.
 int run_compare(const CompareOptions& options, const CommonOptions& common, int argc, char** argv);
