@@ -17,14 +17,21 @@ namespace {
 
 constexpr double kStandardFillRateMlMin = 50.0;  // ICS medium filling, docs/physics.md §7.1
 
-std::vector<ModelParameter> parse_parameters(const std::string& list, const CalibrationModel& m) {
+// The default bladder wall's passive parameters (docs/simulate.md "Default walls"): the
+// start of a fit of the detrusor-voided model, whose wall is that one.
+constexpr double kBladderMuKpa = 1.0, kBladderK1Pa = 60.0, kBladderK2 = 0.045;
+
+std::vector<ModelParameter> parse_parameters(const std::string& list, const CalibrationModel& m,
+                                             bool bladder) {
   std::vector<ModelParameter> specs;
   std::stringstream ss(list);
   for (std::string name; std::getline(ss, name, ',');) {
     if (name.empty()) continue;
     ModelParameter s = model_parameter(name);
     double& start = s.fit.initial;
-    if (name == "mu") start = m.mu_kpa;
+    if (name == "mu") start = bladder ? kBladderMuKpa : m.mu_kpa;
+    if (name == "k1" && bladder) start = kBladderK1Pa;
+    if (name == "k2" && bladder) start = kBladderK2;
     if (name == "k" && m.k_kpa > 0) start = m.k_kpa;
     if (name == "straining" && m.straining_kpa > 0) start = m.straining_kpa;
     if (name == "detrusor" && m.detrusor_kpa > 0) start = m.detrusor_kpa;
@@ -100,7 +107,9 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
   wall_options.residual_ml = o.simulation.start_ml;
   m.wall = simulate::load_wall(o.mesh, wall_options);
   m.material.name = material_for(specs, o.simulation, voiding);
-  m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
+  // The bladder wall keeps its own passive parameters unless fitted.
+  if (m.material.name != "bladder")
+    m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
   if (o.simulation.k_kpa > 0.0)
     m.material.params["K"] = units::pa_from_kpa(o.simulation.k_kpa);
   else
@@ -129,9 +138,11 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
 CalibrationResult calibrate_from_options(const CompareOptions& o, const RecordingAnalysis& a,
                                          const ComparisonOptions& comparison) {
   CalibrationProblem pb;
-  pb.parameters = parse_parameters(o.calibrate, o.simulation);
-  const bool voiding = std::any_of(pb.parameters.begin(), pb.parameters.end(),
+  const std::vector<ModelParameter> named = parse_parameters(o.calibrate, o.simulation, false);
+  const bool voiding = std::any_of(named.begin(), named.end(),
                                    [](const ModelParameter& p) { return p.fit.voiding; });
+  pb.parameters = parse_parameters(o.calibrate, o.simulation,
+                                   material_for(named, o.simulation, voiding) == "bladder");
   pb.targets = targets_for(o, a, comparison, voiding);
   std::vector<std::string> notes;
   pb.model = model_for(o, a, pb.parameters, voiding, notes);

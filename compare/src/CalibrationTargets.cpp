@@ -11,8 +11,12 @@ namespace vesica::compare {
 namespace {
 
 constexpr double kPressureScale = 1.0;  // cmH2O: recordings give whole cmH2O
-constexpr double kFlowScale = 1.0;      // ml/s: uroflowmeters give whole ml/s
-constexpr double kVoidedScale = 10.0;   // ml: one reading, as heavy as a few flow rows
+// cmH2O: Pdet while voiding is the difference of two channels that the voiding's straining
+// moves by several cmH2O (Pabd swings of 10 cmH2O and more), which a model with a resting
+// abdomen does not reproduce: it weighs as a reading that uncertain.
+constexpr double kVoidingPressureScale = 5.0;
+constexpr double kFlowScale = 1.0;     // ml/s: uroflowmeters give whole ml/s
+constexpr double kVoidedScale = 10.0;  // ml: one reading, as heavy as a few flow rows
 // A run "reaches" a volume within this (it stops at capacity to the Newton tolerance).
 constexpr double kReachToleranceMl = 0.01;
 
@@ -159,7 +163,7 @@ void add_timed_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
     if (r.flow_ml_s[i] > 0) last_flow = i;
   TargetSeries q = series("voiding flow", Quantity::Flow, Abscissa::TimeSinceFlowOnset, kFlowScale);
   TargetSeries p =
-      series("voiding Pdet", Quantity::Pdet, Abscissa::TimeSinceFlowOnset, kPressureScale);
+      series("voiding Pdet", Quantity::Pdet, Abscissa::TimeSinceFlowOnset, kVoidingPressureScale);
   for (std::size_t i = 0; i < r.rows(); ++i) {
     if (r.time_s[i] < onset) continue;
     q.x.push_back(r.time_s[i] - onset);
@@ -176,7 +180,8 @@ void add_timed_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
 void add_volume_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
   const Recording& r = m.recording;
   const std::vector<double> voided = r.voided_or_integrated_ml();
-  TargetSeries p = series("voiding Pdet", Quantity::Pdet, Abscissa::VoidedVolume, kPressureScale);
+  TargetSeries p =
+      series("voiding Pdet", Quantity::Pdet, Abscissa::VoidedVolume, kVoidingPressureScale);
   TargetSeries q = series("voiding flow", Quantity::Flow, Abscissa::VoidedVolume, kFlowScale);
   for (std::size_t i = m.ics.capacity_row; i < r.rows(); ++i) {
     if (r.has_flow()) {

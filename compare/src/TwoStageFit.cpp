@@ -56,6 +56,8 @@ std::vector<Eigen::VectorXd> start_points(const std::vector<FitParameter>& param
   return starts;
 }
 
+constexpr std::size_t kModelCandidates = 2;
+
 struct Candidate {
   Eigen::VectorXd u;
   double cost = 0;
@@ -97,7 +99,10 @@ std::optional<Eigen::VectorXd> refine_by_mapping(FitObjective& model, FitObjecti
                                                  const FitBudget& budget, StageLog& log) {
   const FitObjective::Point* current = nullptr;
   Eigen::VectorXd u;
-  for (const auto& c : candidates) {
+  // The best two surrogate optima: a model that runs neither is not rescued by more of
+  // them, and each costs whole model runs (a failed one twice: it is retried).
+  const std::size_t tried = std::min<std::size_t>(candidates.size(), kModelCandidates);
+  for (const auto& c : std::vector<Candidate>(candidates.begin(), candidates.begin() + tried)) {
     current = model.at(c.u);
     if (!current) return std::nullopt;
     if (!current->evaluation.failed) {
@@ -319,10 +324,9 @@ std::optional<Eigen::VectorXd> find_optimum(const FitProblem& pb, FitObjective& 
   const auto tm = Clock::now();
   model.set_budget(refine_budget);
   best = refine_by_mapping(model, *surrogate, candidates, pb.budget, log);
-  if (!best && !model.spent()) {
-    log.notes.push_back("no surrogate optimum ran on the model: fitted on the model directly");
-    best = refine_directly(model, u0, refine_budget - model.simulations(), log);
-  }
+  // Not fitted on the model directly: that costs O(parameters) model runs an iteration,
+  // the very cost the surrogate is there to avoid; the failure is the result.
+  if (!best) log.notes.push_back("the model ran none of the surrogate's best optima");
   r.stages.push_back(stage("model refinement (output space mapping)", pb.model_name, model,
                            seconds_since(tm), cost()));
   return best;
@@ -334,10 +338,17 @@ void report_optimum(const FitProblem& pb, FitObjective& model, FitObjective* sur
   CalibrationResult& r = out.result;
   const std::vector<double> values = model.values(best);
   const Evaluation at_best = model.at(best)->evaluation;
-  auto J = model.jacobian(best, &r.notes);
+  // With a surrogate, J is the corrected surrogate's (its residual plus the model's misfit
+  // to it at the optimum, a constant): m + 1 more model runs would cost more than the fit.
+  if (surrogate) surrogate->set_budget(surrogate->simulations() + 2 * (int(values.size()) + 1));
+  auto J = surrogate ? surrogate->jacobian(best, &r.notes) : model.jacobian(best, &r.notes);
+  if (J && surrogate)
+    r.notes.push_back(
+        "intervals from the Jacobian of the surrogate corrected by the model's output at the "
+        "optimum (output space mapping), not from model runs");
   if (!J && surrogate) {
-    J = surrogate->jacobian(best, &r.notes);
-    r.notes.push_back("intervals from the surrogate's Jacobian: the model's budget is spent");
+    J = model.jacobian(best, &r.notes);
+    r.notes.push_back("intervals from the model's Jacobian: the surrogate's budget is spent");
   }
   const std::vector<ParameterUncertainty> u =
       J ? uncertainty(*J, at_best, pb.parameters, values)
@@ -382,8 +393,8 @@ FitOutcome fit_parameters(const FitProblem& pb) {
   FitOutcome out;
   CalibrationResult& r = out.result;
   const int m = static_cast<int>(pb.parameters.size());
-  // The model's Jacobian at the optimum and the final run come after the refinement.
-  const int reserve = pb.budget.model_simulations >= 2 * (m + 1) ? m + 1 : 0;
+  // Without a surrogate the model's Jacobian at the optimum comes after the refinement.
+  const int reserve = !pb.surrogate && pb.budget.model_simulations >= 2 * (m + 1) ? m + 1 : 0;
   FitObjective model(pb.parameters, pb.targets, pb.model, pb.budget.model_simulations);
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);
