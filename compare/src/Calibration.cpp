@@ -123,17 +123,19 @@ Recording recording_from_history(const std::vector<simulate::HistoryRow>& h) {
 
 ModelSimulator cystometry_simulator(const CystometryModel& base,
                                     const std::vector<ModelParameter>& parameters,
-                                    double capacity_ml, bool voiding) {
+                                    double capacity_ml, bool voiding, bool differentiated) {
   CystometryModel m = base;
   m.protocol.capacity_ml = capacity_ml;
   m.protocol.void_after_fill = voiding;
   m.run.filling_only = !voiding;
   m.run.output_dir.clear();
   m.run.on_progress = nullptr;
-  // Every iteration a fresh tangent: the fit's finite-difference Jacobian needs curves
-  // converged far below the Newton tolerance (quadratic convergence overshoots it), not
-  // the chord iterations' just-below-tolerance ones, whose noise narrows the intervals.
-  m.run.newton.reuse_tangent_ratio = 0.0;
+  // Every iteration a fresh tangent when the fit differentiates this model: its
+  // finite-difference Jacobian needs curves converged far below the Newton tolerance
+  // (quadratic convergence overshoots it), not the chord iterations' just-below-tolerance
+  // ones, whose noise narrows the intervals. A model the output space mapping only runs
+  // keeps the cheaper chord iterations.
+  if (differentiated) m.run.newton.reuse_tangent_ratio = 0.0;
   return [m, parameters](const std::vector<double>& values) {
     CystometryModel trial = m;
     for (std::size_t j = 0; j < parameters.size(); ++j)
@@ -171,13 +173,15 @@ FitOutcome calibrate(const CalibrationProblem& pb) {
   fit.targets = pb.targets;
   const double capacity = pb.targets.capacity_ml;
   const bool voiding = pb.targets.voiding;
-  fit.model = cystometry_simulator(pb.model, pb.parameters, capacity, voiding);
+  // With a surrogate the wall is only run (the Jacobian is the corrected surrogate's).
+  fit.model = cystometry_simulator(pb.model, pb.parameters, capacity, voiding, !pb.use_surrogate);
   fit.model_name = "wall of " + std::to_string(pb.model.wall.triangle_count()) + " triangles";
   const double end = std::max(capacity, pb.data_end_ml);
-  if (end > capacity) fit.final_model = cystometry_simulator(pb.model, pb.parameters, end, voiding);
+  if (end > capacity)
+    fit.final_model = cystometry_simulator(pb.model, pb.parameters, end, voiding, false);
   if (pb.use_surrogate) {
     const CystometryModel surrogate = surrogate_of(pb.model);
-    fit.surrogate = cystometry_simulator(surrogate, pb.parameters, capacity, voiding);
+    fit.surrogate = cystometry_simulator(surrogate, pb.parameters, capacity, voiding, true);
     fit.surrogate_name = "0-D sphere-equivalent of the wall (surrogate)";
   }
   fit.budget = pb.budget;

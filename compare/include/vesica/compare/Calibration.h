@@ -40,10 +40,11 @@ struct CystometryModel {
 };
 
 // Simulates a parameter vector on `base`: applies the values, fills to capacity_ml and, with
-// `voiding`, voids; a run that fails is retried once with halved steps.
+// `voiding`, voids; a run that fails is retried once with halved steps. `differentiated`:
+// the fit takes finite differences of its runs (every Newton iteration a fresh tangent).
 ModelSimulator cystometry_simulator(const CystometryModel& base,
                                     const std::vector<ModelParameter>& parameters,
-                                    double capacity_ml, bool voiding);
+                                    double capacity_ml, bool voiding, bool differentiated);
 
 // The fast surrogate of a model: the same wall, material and protocol at level 0.
 CystometryModel surrogate_of(const CystometryModel& model);
