@@ -102,11 +102,15 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
                           const std::vector<ModelParameter>& specs, bool voiding,
                           std::vector<std::string>& notes) {
   CystometryModel m;
+  m.material.name = material_for(specs, o.simulation, voiding);
   simulate::WallOptions wall_options;
   wall_options.thickness_mm = o.simulation.thickness_mm;
-  wall_options.residual_ml = o.simulation.start_ml;
+  // The bladder wall is stress-free at its own residual volume (WallOptions' default, below
+  // the start of filling: docs/simulate.md "Default walls"), so that it starts filling at a
+  // positive Pdet and can void below the start volume while taut; the plain laws at the
+  // start volume, as the filling-only fits always were.
+  if (m.material.name != "bladder") wall_options.residual_ml = o.simulation.start_ml;
   m.wall = simulate::load_wall(o.mesh, wall_options);
-  m.material.name = material_for(specs, o.simulation, voiding);
   // The bladder wall keeps its own passive parameters unless fitted.
   if (m.material.name != "bladder")
     m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
@@ -151,7 +155,8 @@ CalibrationResult calibrate_from_options(const CompareOptions& o, const Recordin
   pb.budget.surrogate_starts = o.simulation.surrogate_starts;
   pb.budget.model_simulations = o.max_simulations;
   FitOutcome out = calibrate(pb);
-  if (voiding) out.result.voiding = voiding_agreement(a, out.final_run.recording);
+  if (voiding && out.final_run.recording.rows() > 0)
+    out.result.voiding = voiding_agreement(a, out.final_run.recording);
   notes.push_back(fmt::format("the model fills at {:.3g} ml/min from {:g} ml",
                               pb.model.protocol.fill_rate_ml_min, pb.model.protocol.start_ml));
   out.result.notes.insert(out.result.notes.begin(), notes.begin(), notes.end());
