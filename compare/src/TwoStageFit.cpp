@@ -287,8 +287,14 @@ std::vector<ParameterUncertainty> undetermined(const std::vector<FitParameter>& 
 void all_failed(const FitProblem& pb, const FitObjective& model, const FitObjective* surrogate,
                 CalibrationResult& r) {
   const int runs = model.simulations() + (surrogate ? surrogate->simulations() : 0);
-  r.status = "failed: every one of the " + std::to_string(runs) +
-             " runs stopped before the end of the data; nothing was fitted";
+  const int surrogate_ran = surrogate ? surrogate->simulations() - surrogate->failures() : 0;
+  r.status = surrogate_ran > 0
+                 ? "failed: the " + pb.model_name + " ran none of the surrogate's best optima (" +
+                       std::to_string(model.failures()) + " of its " +
+                       std::to_string(model.simulations()) +
+                       " runs stopped before the end of the data); nothing was fitted"
+                 : "failed: every one of the " + std::to_string(runs) +
+                       " runs stopped before the end of the data; nothing was fitted";
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);
   fill_parameters(pb.parameters, start, undetermined(pb.parameters, "not fitted"), r);

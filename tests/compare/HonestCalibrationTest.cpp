@@ -204,3 +204,19 @@ TEST(TwoStageFit, TheModelRunsAFewTimesNotOncePerParameterAndIteration) {
   });
   EXPECT_TRUE(said);
 }
+
+TEST(HonestCalibration, AModelThatRunsNoneOfTheSurrogatesOptimaIsNotFittedAndSaysWhy) {
+  // The surrogate runs everywhere; the model stops short everywhere (as the 3-D wall can
+  // near the end of voiding): nothing is fitted on the model's behalf.
+  vc::FitProblem pb = linear_problem([](double v) { return 3.0 * (v - 50) / 100; });
+  pb.surrogate = pb.model;
+  pb.model = [](const std::vector<double>& p) { return filling_run(linear_law, p, 350, 120); };
+  pb.model_name = "wall";
+  const auto fit = vc::fit_parameters(pb).result;
+  EXPECT_FALSE(fit.fitted);
+  EXPECT_NE(fit.status.find("wall ran none of the surrogate's best optima"), std::string::npos)
+      << fit.status;
+  ASSERT_EQ(fit.stages.size(), 2u);
+  EXPECT_LE(fit.stages[1].simulations, 2);
+  for (const auto& p : fit.parameters) EXPECT_FALSE(p.identifiable);
+}
