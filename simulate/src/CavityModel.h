@@ -62,6 +62,9 @@ struct StepRules {
   double fixed_fill_step_s = 0.0;
   // Voiding steps: 0 = adaptive (CystometryProtocol::next_void_step), else this fixed step.
   double fixed_void_step_s = 0.0;
+  // Bounds of an adaptive voiding step (s); 0: the first step's size and
+  // RunOptions::max_void_step_s.
+  double min_void_step_s = 0.0, max_void_step_s = 0.0;
   double void_frame_interval_s = 1.0;  // frames while voiding (s)
 };
 

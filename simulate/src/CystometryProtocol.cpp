@@ -19,7 +19,12 @@ namespace {
 // step is hard whatever its size, and small steps fail least.
 constexpr double kSlackVoidStepMl = 1.0;
 constexpr double kFirstVoidStepS = 0.1;  // the first adaptive voiding step
-constexpr double kHoldStepS = 10.0;      // the longest adaptive hold step
+constexpr double kOpeningStepS = 0.01;   // the first adaptive step with the urethra open
+// An adaptive voiding step changes the outflow by at most this fraction of the flow (or of
+// the stop flow, when larger): the flow rises fast at the urethra's opening and falls at
+// its closing, and is nearly steady on the plateau and in the tail.
+constexpr double kFlowChangePerStep = 0.2;
+constexpr double kHoldStepS = 10.0;  // the longest adaptive hold step
 // An adaptive filling step grows by kFillGrowth after one that took at most
 // kEasyIterations Newton iterations.
 constexpr int kEasyIterations = 6;
@@ -244,13 +249,18 @@ void CystometryProtocol::void_bladder() {
     if (!urethra_open_ && model_->pves() >= urethra_.opening_pressure()) {
       urethra_open_ = true;
       model_->urethra_opens(urethra_);
+      // The flow starts from zero: a step grown through the isovolumetric contraction
+      // would jump over its rise (and the pressure could fall below p_close in one step).
+      if (adaptive) dt = std::max(rules_.min_void_step_s, kOpeningStepS);
     }
     const double V_before = model_->volume(), t_before = time_, p_before = model_->pves();
+    const double Q_before = model_->outflow();
     if (!adaptive) dt = rules_.fixed_void_step_s;
     if (model_->outflow() > 0.0) dt = std::min(dt, 0.5 * (V_before - V_floor) / model_->outflow());
     const double dt_asked = dt;
+    int iterations = 0;
     try {
-      advance(dt, 0.0, urethra_open_);
+      iterations = advance(dt, 0.0, urethra_open_).iterations;
     } catch (const StepFailed& e) {
       const std::string note = model_->voiding_end_note(e.what());
       if (note.empty()) throw;
@@ -274,7 +284,8 @@ void CystometryProtocol::void_bladder() {
     // again on the crumpling wall, every other step).
     const double dt_taken = time_ - t_before;
     max_growth_ = dt_taken < dt_asked * (1.0 - 1e-9) ? 1.0 : std::min(2.0, 1.25 * max_growth_);
-    dt = next_void_step(dt_taken, std::abs(V_before - model_->volume()));
+    dt = next_void_step(dt_taken, std::abs(V_before - model_->volume()),
+                        std::abs(Q - Q_before) / std::max({Q, Q_before, stop}), iterations);
   }
   if (!urethra_open_) {
     std::ostringstream note;
@@ -301,14 +312,22 @@ bool CystometryProtocol::contraction_spent(double p_before) const {
 // wall drains smoothly (2 Newton iterations a step with the model's predictor), so the aim
 // is a quarter of the volume left above the stress-free reference, up to max_void_step_ml;
 // near and below the reference the wall goes slack and wrinkles, every step is hard
-// whatever its size, and small steps fail least.
-double CystometryProtocol::next_void_step(double dt, double dV) const {
+// whatever its size, and small steps fail least. The step also keeps the flow's relative
+// change per step (flow_change, of the step just taken) near kFlowChangePerStep (backward
+// Euler's error follows the change of the solution per step), and does not grow after a
+// step whose Newton needed more than kEasyIterations. Within the model's bounds.
+double CystometryProtocol::next_void_step(double dt, double dV, double flow_change,
+                                          int iterations) const {
   const double slack_aim = units::m3_from_ml(kSlackVoidStepMl);
   const double aim = std::clamp((model_->volume() - model_->reference_volume()) / 4.0, slack_aim,
                                 std::max(slack_aim, units::m3_from_ml(options_.max_void_step_ml)));
-  const double next =
-      dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, max_growth_ * dt) : max_growth_ * dt;
-  return std::min(next, options_.max_void_step_s);
+  const double growth = iterations > kEasyIterations ? 1.0 : max_growth_;
+  double next = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, growth * dt) : growth * dt;
+  if (flow_change > 0.0)
+    next = std::min(next, std::clamp(dt * kFlowChangePerStep / flow_change, 0.5 * dt, growth * dt));
+  const double longest =
+      rules_.max_void_step_s > 0.0 ? rules_.max_void_step_s : options_.max_void_step_s;
+  return std::clamp(next, std::min(rules_.min_void_step_s, longest), longest);
 }
 
 void CystometryProtocol::record() {

@@ -47,8 +47,9 @@ class CystometryProtocol {
   // One timed step of at most dt with inflow q_in (m³/s), the urethra open or closed,
   // halving dt on failure; throws StepFailed after the model's cut-backs.
   StepResult advance(double dt, double q_in, bool outlet);
-  // The next adaptive voiding step from the one just taken (dt, draining dV).
-  double next_void_step(double dt, double dV) const;
+  // The next adaptive voiding step from the one just taken (dt, draining dV, changing the
+  // outflow by flow_change of itself, in Newton iterations).
+  double next_void_step(double dt, double dV, double flow_change, int iterations) const;
   bool contraction_spent(double p_before) const;
   ProtocolLoads loads_at(double t) const;
   void record();

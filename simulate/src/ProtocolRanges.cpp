@@ -48,7 +48,10 @@ void require_protocol_ranges(const ProtocolSettings& p, const RunOptions& o) {
   if (o.level == 2) {
     if (o.level2.fill_dt_s != 0.0)  // 0: adaptive filling steps
       within(o.level2.fill_dt_s, "fluid-dt-s", 1e-3, 60, "s", "every step is a coupled solve");
-    within(o.level2.void_dt_s, "void-dt-s", 1e-3, 60, "s", "every step is a coupled solve");
+    if (o.level2.void_dt_s != 0.0)  // 0: adaptive voiding steps
+      within(o.level2.void_dt_s, "void-dt-s", 1e-3, 60, "s", "every step is a coupled solve");
+    within(o.level2.void_dt_min_s, "void-dt-min-s", 1e-4, 60, "s", "every step is a coupled solve");
+    within(o.level2.void_dt_max_s, "void-dt-max-s", 1e-4, 60, "s", "the flow's time resolution");
     within(o.level2.urine_viscosity, "urine-viscosity-pa-s", 1e-4, 1, "Pa s",
            "urine is about 1e-3 Pa s");
   }

@@ -170,8 +170,14 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
            NumberRange::greater_than(0).at_most(10).or_value(
                0, "adaptive: growing after easy steps up to max_fill_step_ml"),
            "level 2: time step while filling");
-  t.number("void_dt_s", r.level2.void_dt_s, "s", NumberRange::greater_than(0).at_most(1),
+  t.number("void_dt_s", r.level2.void_dt_s, "s",
+           NumberRange::greater_than(0).at_most(1).or_value(
+               0, "adaptive: from the flow's and volume's change and the Newton iterations"),
            "level 2: time step while voiding");
+  t.number("void_dt_min_s", r.level2.void_dt_min_s, "s", NumberRange::greater_than(0).at_most(1),
+           "level 2: shortest adaptive voiding step (at the urethra's opening)");
+  t.number("void_dt_max_s", r.level2.void_dt_max_s, "s", NumberRange::greater_than(0).at_most(10),
+           "level 2: longest adaptive voiding step (plateau and tail of the flow)");
   t.number("urine_viscosity_pa_s", r.level2.urine_viscosity, "Pa*s",
            NumberRange::at_least(1e-4).at_most(1), "level 2: urine viscosity");
   t.choice<Level2LinearSolver>(

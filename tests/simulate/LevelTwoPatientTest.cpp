@@ -2,8 +2,9 @@
 // executables: the reference label becomes a wall surface with an outlet patch at the
 // bladder neck (vesica-surface), the wall and the urine tetrahedra are meshed
 // (vesica-mesh --fluid), and vesica-simulate --level 2 runs a complete cystometry: it
-// fills the bladder and voids it by straining to the end, with the Navier–Stokes urine
-// (below the stress-free volume level 1 continues, docs/navier-stokes.md §8). A coarse
+// fills the bladder and voids it (by straining, and by the default detrusor) to the end,
+// with the Navier–Stokes urine (below the stress-free volume level 1 continues,
+// docs/navier-stokes.md §8). A coarse
 // mesh keeps the test short; the ≈ 2,300-triangle / ≈ 21,000-tetrahedron run is
 // bench/bench_simulate_level2.sh.
 //
@@ -89,14 +90,11 @@ int inverted_tets(vtkUnstructuredGrid* grid) {
   return inverted;
 }
 
-}  // namespace
-
-TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
-  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
-  const fs::path dir = scratch_dir("simulate-level2-patient");
+// The coarse wall and urine tetrahedra of the CT bladder in dir (bladder.vtu), with a wide
+// outlet patch at the neck: the infusion enters and the urine leaves through its inner
+// nodes (one node would make a jet the coarse mesh cannot carry).
+void mesh_coarse_bladder(const fs::path& label, const fs::path& dir) {
   const std::string bin = bin_dir().string();
-  // A wide outlet patch at the neck: the infusion enters and the urine leaves through its
-  // inner nodes (one node would make a jet the coarse mesh cannot carry).
   CommandResult r = run_command(bin + "/vesica-surface " + label.string() + " -o " +
                                 (dir / "bladder.vtp").string() +
                                 " --target-triangles 600 --outlet auto --outlet-radius-mm 12");
@@ -104,9 +102,48 @@ TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
   r = run_command(bin + "/vesica-mesh " + (dir / "bladder.vtp").string() + " -o " +
                   (dir / "bladder.msh").string() + " --fluid --json");
   ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
+// Every frame of fluid.pvd opens with velocity, pressure and wall shear on every node, and
+// holds no inverted tetrahedron; returns the frames.
+std::vector<fs::path> expect_valid_fluid_frames(const fs::path& run) {
+  const std::vector<fs::path> frames = fluid_frames(run);
+  for (const fs::path& frame : frames) {
+    EXPECT_TRUE(fs::exists(frame)) << frame;
+    const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(frame);
+    EXPECT_GT(grid->GetNumberOfCells(), 0) << frame;
+    EXPECT_EQ(inverted_tets(grid), 0) << frame;
+    for (const char* name : {"velocity_mm_s", "pressure_cmh2o", "wall_shear_pa"}) {
+      vtkDataArray* a = grid->GetPointData()->GetArray(name);
+      EXPECT_NE(a, nullptr) << name << " in " << frame;
+      if (a != nullptr) {
+        EXPECT_EQ(a->GetNumberOfTuples(), grid->GetNumberOfPoints()) << name << " in " << frame;
+      }
+    }
+  }
+  return frames;
+}
+
+// Continuity: the tetrahedra hold exactly what went in minus what went out at every row,
+// through every remesh (and a hand-over to level 1), to 1e-9 of the capacity.
+void expect_mass_balance(const fs::path& run, double capacity_ml) {
+  const auto rows = read_history(run / "history.csv");
+  ASSERT_GT(rows.size(), 10u);
+  EXPECT_NEAR(rows.front().volume, 50.0, 1e-6);
+  for (const HistoryCsvRow& row : rows)
+    EXPECT_NEAR(row.volume, 50.0 + row.infused - row.voided, 1e-9 * capacity_ml) << "t = " << row.t;
+}
+
+}  // namespace
+
+TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const fs::path dir = scratch_dir("simulate-level2-patient");
+  const std::string bin = bin_dir().string();
+  ASSERT_NO_FATAL_FAILURE(mesh_coarse_bladder(label, dir));
   const std::string mesh = (dir / "bladder.vtu").string();
-  r = run_command(bin + "/vesica-simulate " + mesh + " -o " + (dir / "level2").string() +
-                  " --level 2" + kProtocol);
+  CommandResult r = run_command(bin + "/vesica-simulate " + mesh + " -o " +
+                                (dir / "level2").string() + " --level 2" + kProtocol);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   r = run_command(bin + "/vesica-simulate " + mesh + " -o " + (dir / "level1").string() +
                   " --no-series" + kProtocol);
@@ -126,13 +163,7 @@ TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
   ASSERT_TRUE(s2["completed"].get<bool>()) << s2.dump(1);
   EXPECT_EQ(s2["level"].get<int>(), 2);
 
-  // Continuity: the tetrahedra hold exactly what went in minus what went out, through
-  // every remesh and the hand-over to level 1.
-  const auto rows = read_history(dir / "level2" / "history.csv");
-  ASSERT_GT(rows.size(), 10u);
-  EXPECT_NEAR(rows.front().volume, 50.0, 1e-6);
-  for (const HistoryCsvRow& row : rows)
-    EXPECT_NEAR(row.volume, 50.0 + row.infused - row.voided, 1e-9 * kCapacityMl) << "t = " << row.t;
+  expect_mass_balance(dir / "level2", kCapacityMl);
   EXPECT_NEAR(s2["capacity_ml"].get<double>(), kCapacityMl, 1e-6);
 
   // Slow filling: the same pressure as level 1 (acceptance: 3 %).
@@ -156,19 +187,52 @@ TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
 
   // The fields open in VTK's reader, on every node of every tetrahedron, and no frame
   // holds an inverted tetrahedron.
-  const std::vector<fs::path> frames = fluid_frames(dir / "level2");
+  const std::vector<fs::path> frames = expect_valid_fluid_frames(dir / "level2");
   ASSERT_GE(frames.size(), 5u);
-  for (const fs::path& frame : frames) {
-    ASSERT_TRUE(fs::exists(frame)) << frame;
-    const vtkSmartPointer<vtkUnstructuredGrid> grid = read_grid(frame);
-    ASSERT_GT(grid->GetNumberOfCells(), 0) << frame;
-    EXPECT_EQ(inverted_tets(grid), 0) << frame;
-    for (const char* name : {"velocity_mm_s", "pressure_cmh2o", "wall_shear_pa"}) {
-      vtkDataArray* a = grid->GetPointData()->GetArray(name);
-      ASSERT_NE(a, nullptr) << name << " in " << frame;
-      EXPECT_EQ(a->GetNumberOfTuples(), grid->GetNumberOfPoints()) << name << " in " << frame;
-    }
-  }
   EXPECT_EQ(read_grid(frames.front())->GetNumberOfCells(), s2["tetrahedra"].get<vtkIdType>());
   EXPECT_TRUE(fs::exists(dir / "level2" / "series.pvd"));
+}
+
+// The default voiding: the detrusor of the default (bladder) wall contracts along its
+// activation curve and voids through the urethra law, at level 2 as at level 1 (the same
+// protocol drives both), in adaptive voiding steps. Filled to 150 ml so that the
+// contraction of the coarse wall voids most of it.
+TEST(LevelTwoPatient, DetrusorVoidsTheRealCtBladderLikeLevelOne) {
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const fs::path dir = scratch_dir("simulate-level2-detrusor");
+  const std::string bin = bin_dir().string();
+  ASSERT_NO_FATAL_FAILURE(mesh_coarse_bladder(label, dir));
+  constexpr double kDetrusorCapacityMl = 150.0;
+  const std::string protocol = " --capacity-ml 150 --residual-ml 45 --json";
+  const std::string mesh = (dir / "bladder.vtu").string();
+  CommandResult r = run_command(bin + "/vesica-simulate " + mesh + " -o " +
+                                (dir / "level2").string() + " --level 2" + protocol);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_command(bin + "/vesica-simulate " + mesh + " -o " + (dir / "level1").string() +
+                  " --no-series" + protocol);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto s2 = read_json(dir / "level2" / "summary.json");
+  const auto s1 = read_json(dir / "level1" / "summary.json");
+  std::cout << "[ level 2, detrusor ] Pdet at capacity " << s2["pdet_at_capacity_cmh2o"]
+            << " cmH2O (level 1 " << s1["pdet_at_capacity_cmh2o"] << "), Qmax " << s2["qmax_ml_s"]
+            << " ml/s (level 1 " << s1["qmax_ml_s"] << "), PVR " << s2["pvr_ml"] << " ml (level 1 "
+            << s1["pvr_ml"] << "), remeshes " << s2["remeshes"] << ", newton " << s2["newton"]
+            << ", " << s2["compute_s"] << " s" << std::endl;
+  ASSERT_TRUE(s2["completed"].get<bool>()) << s2.dump(1);
+  EXPECT_EQ(s2["voiding_drive"].get<std::string>(), "detrusor");
+  EXPECT_EQ(s1["voiding_drive"].get<std::string>(), "detrusor");
+  expect_mass_balance(dir / "level2", kDetrusorCapacityMl);
+
+  const double pdet1 = s1["pdet_at_capacity_cmh2o"].get<double>();
+  ASSERT_GT(pdet1, 0.0);
+  EXPECT_NEAR(s2["pdet_at_capacity_cmh2o"].get<double>(), pdet1, 0.03 * pdet1);
+  // The contraction voids most of the bladder at both levels, to residuals within 5 ml.
+  const double voided1 = s1["voided_ml"].get<double>();
+  EXPECT_GT(voided1, 0.5 * kDetrusorCapacityMl);
+  EXPECT_NEAR(s2["voided_ml"].get<double>() + s2["pvr_ml"].get<double>(), kDetrusorCapacityMl,
+              1e-3);
+  EXPECT_NEAR(s2["pvr_ml"].get<double>(), s1["pvr_ml"].get<double>(), 5.0);
+  const double q1 = s1["qmax_ml_s"].get<double>();
+  EXPECT_NEAR(s2["qmax_ml_s"].get<double>(), q1, 0.1 * q1);
+  EXPECT_GE(expect_valid_fluid_frames(dir / "level2").size(), 5u);
 }
