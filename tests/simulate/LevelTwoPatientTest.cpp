@@ -20,9 +20,12 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <string>
 
 #include <array>
 #include <vector>
@@ -66,6 +69,24 @@ std::vector<fs::path> fluid_frames(const fs::path& dir) {
       frames.push_back(dir / line.substr(at + 6, line.find('"', at + 6) - at - 6));
   }
   return frames;
+}
+
+// The frame of fluid.pvd whose time is nearest t (s).
+fs::path fluid_frame_nearest(const fs::path& dir, double t) {
+  std::ifstream in(dir / "fluid.pvd");
+  std::string line;
+  fs::path best;
+  double best_gap = INFINITY;
+  while (std::getline(in, line)) {
+    const auto at_t = line.find("timestep=\""), at_f = line.find("file=\"");
+    if (at_t == std::string::npos || at_f == std::string::npos) continue;
+    const double gap = std::abs(std::stod(line.substr(at_t + 10)) - t);
+    if (gap < best_gap) {
+      best_gap = gap;
+      best = dir / line.substr(at_f + 6, line.find('"', at_f + 6) - at_f - 6);
+    }
+  }
+  return best;
 }
 
 vtkSmartPointer<vtkUnstructuredGrid> read_grid(const fs::path& file) {
@@ -235,4 +256,35 @@ TEST(LevelTwoPatient, DetrusorVoidsTheRealCtBladderLikeLevelOne) {
   const double q1 = s1["qmax_ml_s"].get<double>();
   EXPECT_NEAR(s2["qmax_ml_s"].get<double>(), q1, 0.1 * q1);
   EXPECT_GE(expect_valid_fluid_frames(dir / "level2").size(), 5u);
+
+  // What only level 2 shows: the report of the run pictures the jet into the urethra at
+  // Qmax, on a colour bar that ends at that frame's largest urine speed.
+  r = run_command(bin + "/vesica-compare --simulated " + (dir / "level2" / "history.csv").string() +
+                  " -o " + (dir / "report").string() + " --no-pdf");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream page_in(dir / "report" / "index.html");
+  const std::string page((std::istreambuf_iterator<char>(page_in)),
+                         std::istreambuf_iterator<char>());
+  const auto svg = page.find("<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fluid-jet\"");
+  ASSERT_NE(svg, std::string::npos) << "no jet picture in the report";
+  EXPECT_NE(page.find("|u| (m/s)", svg), std::string::npos);
+  EXPECT_NE(page.find("(mm)", svg), std::string::npos);
+  const auto at = page.find("data-colour-bar-max-m-s=\"", svg);
+  ASSERT_NE(at, std::string::npos);
+  const double bar_max = std::stod(page.substr(at + 25));
+  const auto rows = read_history(dir / "level2" / "history.csv");
+  const auto qmax_row = std::max_element(
+      rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.flow < b.flow; });
+  const vtkSmartPointer<vtkUnstructuredGrid> grid =
+      read_grid(fluid_frame_nearest(dir / "level2", qmax_row->t));
+  vtkDataArray* u = grid->GetPointData()->GetArray("velocity_mm_s");
+  ASSERT_NE(u, nullptr);
+  double max_speed = 0.0;
+  for (vtkIdType i = 0; i < u->GetNumberOfTuples(); ++i) {
+    double v[3];
+    u->GetTuple(i, v);
+    max_speed = std::max(max_speed, 1e-3 * std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+  }
+  EXPECT_GT(max_speed, 0.01);
+  EXPECT_NEAR(bar_max, max_speed, 1e-8 * max_speed);
 }

@@ -10,6 +10,7 @@
 #include "fluid/BoundaryFaces.h"
 #include "fluid/MeshMotion.h"
 #include "fluid/TetQuality.h"
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
@@ -204,6 +205,9 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   result.converged = true;
   // Backward Euler: the tetrahedra lost exactly Q(t_{n+1}) dt through the outlet.
   result.voided_m3 = coupling_->outflow() * step.dt_s;
+  if (coupling_->outlet_open())
+    jet_.push_back(outlet_jet(outlet_faces_, coupling_->positions(), coupling_->state(),
+                              step.end_time_s, coupling_->outflow()));
   check_mesh(step.end_time_s);
   update_max_speed();
   return result;
@@ -335,11 +339,17 @@ void NavierStokesCavity::add_frame(double time_s, bool write) {
   const std::vector<Eigen::Vector3d> shear = nodal_wall_shear(now);
   for (std::size_t i = 0; i < wall_.node_count(); ++i)
     max_shear_ = std::max(max_shear_, shear[i].norm());
-  if (write && fluid_series_) fluid_series_->add_step(time_s, now, coupling_->full_state(), &shear);
+  if (write && fluid_series_) {
+    const OutletAxis outlet = outlet_axis(outlet_faces_, now.nodes);
+    fluid_series_->add_step(time_s, now, coupling_->full_state(), &shear, &outlet);
+  }
 }
 
 void NavierStokesCavity::finish_frames() {
   if (fluid_series_) fluid_series_->finish();
+  if (!options_.output_dir.empty() && !jet_.empty())
+    write_text_atomically(options_.output_dir / "jet.csv",
+                          jet_csv(jet_, patch_area(outlet_faces_, coupling_->positions())));
 }
 
 std::vector<std::string> NavierStokesCavity::take_notes() {
@@ -363,6 +373,7 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["max_wall_shear_pa"] = max_shear_;
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
+  s["jet"] = jet_summary(jet_);
   s["level1_from"] = collapse_ ? nlohmann::json{{"time_s", collapse_time_s_},
                                                 {"volume_ml", units::ml_from_m3(collapse_volume_)}}
                                : nlohmann::json(nullptr);
