@@ -65,6 +65,9 @@ struct StepRules {
   // Bounds of an adaptive voiding step (s); 0: the first step's size and
   // RunOptions::max_void_step_s.
   double min_void_step_s = 0.0, max_void_step_s = 0.0;
+  // Adaptive voiding steps also follow the outflow's change and the Newton iterations, and
+  // restart at the shortest step when the urethra opens (CystometryProtocol::next_void_step).
+  bool void_step_follows_flow = false;
   double void_frame_interval_s = 1.0;  // frames while voiding (s)
 };
 

@@ -251,7 +251,8 @@ void CystometryProtocol::void_bladder() {
       model_->urethra_opens(urethra_);
       // The flow starts from zero: a step grown through the isovolumetric contraction
       // would jump over its rise (and the pressure could fall below p_close in one step).
-      if (adaptive) dt = std::max(rules_.min_void_step_s, kOpeningStepS);
+      if (adaptive && rules_.void_step_follows_flow)
+        dt = std::max(rules_.min_void_step_s, kOpeningStepS);
     }
     const double V_before = model_->volume(), t_before = time_, p_before = model_->pves();
     const double Q_before = model_->outflow();
@@ -312,18 +313,20 @@ bool CystometryProtocol::contraction_spent(double p_before) const {
 // wall drains smoothly (2 Newton iterations a step with the model's predictor), so the aim
 // is a quarter of the volume left above the stress-free reference, up to max_void_step_ml;
 // near and below the reference the wall goes slack and wrinkles, every step is hard
-// whatever its size, and small steps fail least. The step also keeps the flow's relative
-// change per step (flow_change, of the step just taken) near kFlowChangePerStep (backward
-// Euler's error follows the change of the solution per step), and does not grow after a
-// step whose Newton needed more than kEasyIterations. Within the model's bounds.
+// whatever its size, and small steps fail least. When the model asks (level 2,
+// StepRules::void_step_follows_flow) the step also keeps the flow's relative change per
+// step (flow_change, of the step just taken) near kFlowChangePerStep (backward Euler's
+// error follows the change of the solution per step), and does not grow after a step whose
+// Newton needed more than kEasyIterations. Within the model's bounds.
 double CystometryProtocol::next_void_step(double dt, double dV, double flow_change,
                                           int iterations) const {
   const double slack_aim = units::m3_from_ml(kSlackVoidStepMl);
   const double aim = std::clamp((model_->volume() - model_->reference_volume()) / 4.0, slack_aim,
                                 std::max(slack_aim, units::m3_from_ml(options_.max_void_step_ml)));
-  const double growth = iterations > kEasyIterations ? 1.0 : max_growth_;
+  const bool by_flow = rules_.void_step_follows_flow;
+  const double growth = by_flow && iterations > kEasyIterations ? 1.0 : max_growth_;
   double next = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, growth * dt) : growth * dt;
-  if (flow_change > 0.0)
+  if (by_flow && flow_change > 0.0)
     next = std::min(next, std::clamp(dt * kFlowChangePerStep / flow_change, 0.5 * dt, growth * dt));
   const double longest =
       rules_.max_void_step_s > 0.0 ? rules_.max_void_step_s : options_.max_void_step_s;

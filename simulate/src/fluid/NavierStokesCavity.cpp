@@ -102,6 +102,7 @@ StepRules NavierStokesCavity::rules() const {
   r.fixed_void_step_s = options_.level2.void_dt_s;
   r.min_void_step_s = options_.level2.void_dt_min_s;
   r.max_void_step_s = options_.level2.void_dt_max_s;
+  r.void_step_follows_flow = true;
   r.void_frame_interval_s = kVoidFrameIntervalS;
   return r;  // settling: level 1's cut-backs
 }
