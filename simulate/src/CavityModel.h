@@ -68,6 +68,9 @@ struct StepRules {
   // Adaptive voiding steps also follow the outflow's change and the Newton iterations, and
   // restart at the shortest step when the urethra opens (CystometryProtocol::next_void_step).
   bool void_step_follows_flow = false;
+  // Volume an adaptive voiding step aims to drain (ml): of a taut wall at most, and of a
+  // slack one; 0: RunOptions::max_void_step_ml and the protocol's own slack aim.
+  double void_step_ml = 0.0, slack_void_step_ml = 0.0;
   double void_frame_interval_s = 1.0;  // frames while voiding (s)
 };
 

@@ -320,9 +320,12 @@ bool CystometryProtocol::contraction_spent(double p_before) const {
 // Newton needed more than kEasyIterations. Within the model's bounds.
 double CystometryProtocol::next_void_step(double dt, double dV, double flow_change,
                                           int iterations) const {
-  const double slack_aim = units::m3_from_ml(kSlackVoidStepMl);
+  const double slack_aim = units::m3_from_ml(
+      rules_.slack_void_step_ml > 0.0 ? rules_.slack_void_step_ml : kSlackVoidStepMl);
+  const double taut_aim = units::m3_from_ml(rules_.void_step_ml > 0.0 ? rules_.void_step_ml
+                                                                      : options_.max_void_step_ml);
   const double aim = std::clamp((model_->volume() - model_->reference_volume()) / 4.0, slack_aim,
-                                std::max(slack_aim, units::m3_from_ml(options_.max_void_step_ml)));
+                                std::max(slack_aim, taut_aim));
   const bool by_flow = rules_.void_step_follows_flow;
   const double growth = by_flow && iterations > kEasyIterations ? 1.0 : max_growth_;
   double next = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, growth * dt) : growth * dt;

@@ -27,6 +27,12 @@ constexpr double kRemeshCountTolerance = 0.1;
 // Cut-backs of a failed step (each halves it), and frames while voiding.
 constexpr int kMaxCutbacks = 5;
 constexpr double kVoidFrameIntervalS = 0.5;
+// Volumes an adaptive voiding step aims to drain, of a taut and of a slack wall (ml): the
+// step also follows the flow's change (StepRules::void_step_follows_flow), which bounds
+// backward Euler's error where the flow changes, so the volume aims are looser than
+// level 1's, whose quasi-static wall has no other limit.
+constexpr double kVoidStepMl = 20.0;
+constexpr double kSlackVoidStepMl = 5.0;
 
 std::vector<std::array<int, 3>> region_faces(const WallModel& wall, Region region) {
   std::vector<std::array<int, 3>> faces;
@@ -103,6 +109,8 @@ StepRules NavierStokesCavity::rules() const {
   r.min_void_step_s = options_.level2.void_dt_min_s;
   r.max_void_step_s = options_.level2.void_dt_max_s;
   r.void_step_follows_flow = true;
+  r.void_step_ml = kVoidStepMl;
+  r.slack_void_step_ml = kSlackVoidStepMl;
   r.void_frame_interval_s = kVoidFrameIntervalS;
   return r;  // settling: level 1's cut-backs
 }

@@ -82,7 +82,7 @@ struct Level2Options {
   // Time step while voiding (s); 0: the protocol's adaptive step, from the flow's and the
   // volume's change per step and the Newton iterations, within [void_dt_min_s, void_dt_max_s].
   double void_dt_s = 0.0;
-  double void_dt_min_s = 0.01, void_dt_max_s = 1.0;
+  double void_dt_min_s = 0.01, void_dt_max_s = 0.5;
   double urine_viscosity = 1e-3;  // Pa·s
   Level2LinearSolver linear_solver = Level2LinearSolver::Krylov;
   // The coupled wall–urine Newton (increment tests, 40 iterations, no line search).
