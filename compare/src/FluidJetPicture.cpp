@@ -50,10 +50,10 @@ struct CutFrame {
   Eigen::Vector3d origin, along, across, normal;
 };
 
-CutFrame cut_frame(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis) {
+CutFrame cut_frame(vtkUnstructuredGrid* grid, const fs::path& vtu) {
   CutFrame f;
-  f.origin = origin;
-  f.along = axis.normalized();
+  f.origin = field_vector(grid, "outlet_centroid_mm", vtu);
+  f.along = field_vector(grid, "outlet_axis", vtu).normalized();
   Eigen::Vector3d n = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(f.along) * f.along;
   if (n.norm() < 1e-3)
     n = Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitY().dot(f.along) * f.along;
@@ -81,15 +81,10 @@ double speed_m_s(vtkDataArray* u_mm_s, vtkIdType i) {
   return 1e-3 * std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
 }
 
-std::string fmt(double v) {
+// v with `digits` significant digits.
+std::string significant(double v, int digits) {
   char s[32];
-  std::snprintf(s, sizeof s, "%.4g", v);
-  return s;
-}
-
-std::string exact(double v) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.9g", v);
+  std::snprintf(s, sizeof s, "%.*g", digits, v);
   return s;
 }
 
@@ -116,7 +111,7 @@ void draw_colour_bar(std::ostringstream& o, double max_speed) {
   for (int i = 0; i <= 4; ++i) {
     const double y = kTop + kPlotH * (1.0 - i / 4.0);
     o << "<text x=\"" << kBarX + kBarW + 4 << "\" y=\"" << y + 4 << "\" font-size=\"11\""
-      << (i == 4 ? " class=\"colour-bar-max\"" : "") << ">" << fmt(max_speed * i / 4.0)
+      << (i == 4 ? " class=\"colour-bar-max\"" : "") << ">" << significant(max_speed * i / 4.0, 4)
       << "</text>\n";
   }
   o << "<text x=\"" << kBarX - 6 << "\" y=\"" << kTop - 10
@@ -127,8 +122,7 @@ void draw_colour_bar(std::ostringstream& o, double max_speed) {
 
 FluidJetPicture fluid_jet_picture(const fs::path& vtu) {
   const vtkSmartPointer<vtkUnstructuredGrid> grid = read_frame(vtu);
-  const CutFrame frame = cut_frame(field_vector(grid, "outlet_centroid_mm", vtu),
-                                   field_vector(grid, "outlet_axis", vtu));
+  const CutFrame frame = cut_frame(grid, vtu);
   vtkDataArray* u = grid->GetPointData()->GetArray("velocity_mm_s");
   FluidJetPicture pic;
   pic.frame = vtu.filename().string();
@@ -170,7 +164,7 @@ FluidJetPicture fluid_jet_picture(const fs::path& vtu) {
   o.precision(5);
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fluid-jet\" id=\"fluid-jet\" width=\""
     << kWidth << "\" height=\"" << kHeight << "\" viewBox=\"0 0 " << kWidth << ' ' << kHeight
-    << "\" data-colour-bar-max-m-s=\"" << exact(pic.max_speed_m_s)
+    << "\" data-colour-bar-max-m-s=\"" << significant(pic.max_speed_m_s, 9)
     << "\" font-family=\"sans-serif\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   draw_colour_bar(o, pic.max_speed_m_s);
   o << "<g stroke-width=\"0.3\">\n";

@@ -214,9 +214,11 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   result.converged = true;
   // Backward Euler: the tetrahedra lost exactly Q(t_{n+1}) dt through the outlet.
   result.voided_m3 = coupling_->outflow() * step.dt_s;
-  if (coupling_->outlet_open())
+  if (coupling_->outlet_open()) {
     jet_.push_back(outlet_jet(outlet_faces_, coupling_->positions(), coupling_->state(),
-                              step.end_time_s, coupling_->outflow()));
+                              coupling_->outflow()));
+    jet_.back().time_s = step.end_time_s;
+  }
   check_mesh(step.end_time_s);
   update_max_speed();
   return result;

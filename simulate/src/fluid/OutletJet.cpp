@@ -41,9 +41,8 @@ double patch_area(const std::vector<std::array<int, 3>>& faces,
 
 OutletJetRow outlet_jet(const std::vector<std::array<int, 3>>& faces,
                         const std::vector<Eigen::Vector3d>& x, const Eigen::VectorXd& state,
-                        double time_s, double flow_m3_s) {
+                        double flow_m3_s) {
   OutletJetRow row;
-  row.time_s = time_s;
   row.flow_m3_s = flow_m3_s;
   std::set<int> nodes;
   for (const auto& f : faces) nodes.insert(f.begin(), f.end());

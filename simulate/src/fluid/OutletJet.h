@@ -28,10 +28,10 @@ OutletAxis outlet_axis(const std::vector<std::array<int, 3>>& faces,
 double patch_area(const std::vector<std::array<int, 3>>& faces,
                   const std::vector<Eigen::Vector3d>& x);
 
-// The jet now: state as in FluidMesh.h (velocities m/s), flow Q (m³/s).
+// The jet now (time_s left 0): state as in FluidMesh.h (velocities m/s), flow Q (m³/s).
 OutletJetRow outlet_jet(const std::vector<std::array<int, 3>>& faces,
                         const std::vector<Eigen::Vector3d>& x, const Eigen::VectorXd& state,
-                        double time_s, double flow_m3_s);
+                        double flow_m3_s);
 
 // jet.csv: a comment line, the header with units, one row per step.
 std::string jet_csv(const std::vector<OutletJetRow>& rows, double patch_area_m2);
