@@ -1,0 +1,93 @@
+#include "Checkpoint.h"
+
+#include <csignal>
+#include <cstdlib>
+#include <sstream>
+
+#include "vesica/core/Error.h"
+#include "vesica/core/Log.h"
+
+namespace vesica::simulate {
+namespace {
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void note_stop_signal(int signal) {
+  g_stop_signal = signal;
+}
+
+struct sigaction g_previous_term, g_previous_int;
+
+const char* signal_label(int signal) {
+  return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+}
+
+}  // namespace
+
+Checkpointer::Checkpointer(const RunOptions::Checkpoints& options)
+    : options_(options), last_(std::chrono::steady_clock::now()) {
+  g_stop_signal = 0;
+  struct sigaction action {};
+  action.sa_handler = note_stop_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGTERM, &action, &g_previous_term);
+  sigaction(SIGINT, &action, &g_previous_int);
+  if (const char* k = std::getenv("VESICA_SIMULATE_STOP_AFTER_STEPS")) stop_after_ = std::atol(k);
+}
+
+Checkpointer::~Checkpointer() {
+  sigaction(SIGTERM, &g_previous_term, nullptr);
+  sigaction(SIGINT, &g_previous_int, nullptr);
+}
+
+bool Checkpointer::due() {
+  if (++steps_ == stop_after_) std::raise(SIGTERM);
+  const double minutes =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() / 60.0;
+  return g_stop_signal != 0 || minutes >= options_.interval_min;
+}
+
+void Checkpointer::write(const CheckpointWriter& state, double time_s, const std::string& phase) {
+  if (time_s == last_time_s_) return;  // this state is in the file already
+  write_checkpoint(options_.file, checkpoint_identity(options_, time_s, phase), state);
+  last_ = std::chrono::steady_clock::now();
+  last_time_s_ = time_s;
+  vesica::log()->info("checkpoint at t = {:.6g} s in {}", time_s, options_.file.string());
+}
+
+void Checkpointer::stop_if_signalled() const {
+  const int signal = g_stop_signal;
+  if (!signal) return;
+  std::ostringstream what;
+  what << "interrupted by " << signal_label(signal);
+  if (last_time_s_ >= 0.0)
+    what << "; checkpoint at t = " << last_time_s_ << " s in " << options_.file.string()
+         << " (continue with --resume)";
+  else
+    what << " before its first checkpoint";
+  throw RunInterrupted(signal, what.str());
+}
+
+nlohmann::json checkpoint_identity(const RunOptions::Checkpoints& options, double time_s,
+                                   const std::string& phase) {
+  return {{"run", nlohmann::json::parse(options.identity.empty() ? "{}" : options.identity)},
+          {"time_s", time_s},
+          {"phase", phase}};
+}
+
+CheckpointFile read_own_checkpoint(const RunOptions::Checkpoints& options) {
+  CheckpointFile file = read_checkpoint(options.file);
+  const nlohmann::json own =
+      nlohmann::json::parse(options.identity.empty() ? "{}" : options.identity);
+  const nlohmann::json& theirs =
+      file.identity.contains("run") ? file.identity["run"] : nlohmann::json();
+  if (theirs.value("inputs", nlohmann::json()) != own.value("inputs", nlohmann::json()))
+    fail(options.file.string(), "this checkpoint was computed from other inputs",
+         "remove it to start the simulation from the beginning");
+  if (theirs.value("parameters", nlohmann::json()) != own.value("parameters", nlohmann::json()))
+    fail(options.file.string(), "this checkpoint was computed with other parameters",
+         "remove it to start the simulation from the beginning");
+  return file;
+}
+
+}  // namespace vesica::simulate
