@@ -52,7 +52,7 @@ void Checkpointer::write(const CheckpointWriter& state, double time_s, const std
   write_checkpoint(options_.file, checkpoint_identity(options_, time_s, phase), state);
   last_ = std::chrono::steady_clock::now();
   last_time_s_ = time_s;
-  vesica::log()->info("checkpoint at t = {:.6g} s in {}", time_s, options_.file.string());
+  vesica::log()->debug("checkpoint at t = {:.6g} s in {}", time_s, options_.file.string());
 }
 
 void Checkpointer::stop_if_signalled() const {
