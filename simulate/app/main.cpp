@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
       ->required();
   add_parameter_options(app, table);
   app.add_flag("--resume", resume,
-               "continue an interrupted run from its checkpoint (level 1; docs/simulate.md)");
+               "continue an interrupted run from its checkpoint (docs/simulate.md)");
   add_common_options(app, common);
 
   return run_stage_main(app, argc, argv, common, [&]() {

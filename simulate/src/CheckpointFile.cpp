@@ -84,11 +84,30 @@ void CheckpointWriter::put(const std::string& name, const std::vector<double>& v
   field(name, kDouble, values.size(), values.data(), values.size() * sizeof(double));
 }
 
+void CheckpointWriter::put(const std::string& name, const std::vector<std::int64_t>& values) {
+  field(name, kInteger, values.size(), values.data(), values.size() * sizeof(std::int64_t));
+}
+
 void CheckpointWriter::put(const std::string& name, const std::vector<Eigen::Vector3d>& points) {
   std::vector<double> flat;
   flat.reserve(3 * points.size());
   for (const auto& p : points) flat.insert(flat.end(), {p.x(), p.y(), p.z()});
   put(name, flat);
+}
+
+void CheckpointWriter::put(const std::string& name, const Eigen::SparseMatrix<double>& matrix) {
+  std::vector<std::int64_t> rows, cols;
+  std::vector<double> values;
+  for (Eigen::Index k = 0; k < matrix.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, k); it; ++it) {
+      rows.push_back(it.row());
+      cols.push_back(it.col());
+      values.push_back(it.value());
+    }
+  put(name + ".size", static_cast<std::int64_t>(matrix.rows()));
+  put(name + ".rows", rows);
+  put(name + ".columns", cols);
+  put(name + ".values", values);
 }
 
 void CheckpointWriter::put(const std::string& name, const std::string& text) {
@@ -144,6 +163,14 @@ std::vector<double> CheckpointReader::numbers(const std::string& name) {
   return values;
 }
 
+std::vector<std::int64_t> CheckpointReader::integers(const std::string& name) {
+  std::vector<std::int64_t> values(next(name, kInteger, sizeof(std::int64_t)));
+  if (!values.empty())
+    std::memcpy(values.data(), bytes_.data() + at_, values.size() * sizeof(std::int64_t));
+  at_ += values.size() * sizeof(std::int64_t);
+  return values;
+}
+
 std::vector<Eigen::Vector3d> CheckpointReader::points(const std::string& name) {
   const std::vector<double> flat = numbers(name);
   if (flat.size() % 3) reject("the state field " + name + " is not a list of points");
@@ -151,6 +178,25 @@ std::vector<Eigen::Vector3d> CheckpointReader::points(const std::string& name) {
   for (std::size_t i = 0; i < out.size(); ++i)
     out[i] = {flat[3 * i], flat[3 * i + 1], flat[3 * i + 2]};
   return out;
+}
+
+Eigen::SparseMatrix<double> CheckpointReader::sparse(const std::string& name) {
+  const std::int64_t n = integer(name + ".size");
+  const std::vector<std::int64_t> rows = integers(name + ".rows"),
+                                  cols = integers(name + ".columns");
+  const std::vector<double> values = numbers(name + ".values");
+  if (n < 0 || rows.size() != values.size() || cols.size() != values.size())
+    reject("the state field " + name + " is not a sparse matrix");
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(values.size());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (rows[k] < 0 || rows[k] >= n || cols[k] < 0 || cols[k] >= n)
+      reject("the state field " + name + " has an entry outside its size");
+    entries.emplace_back(static_cast<int>(rows[k]), static_cast<int>(cols[k]), values[k]);
+  }
+  Eigen::SparseMatrix<double> matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  return matrix;
 }
 
 std::string CheckpointReader::text(const std::string& name) {

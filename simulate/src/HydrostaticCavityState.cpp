@@ -38,19 +38,7 @@ void HydrostaticCavity::save_state(CheckpointWriter& out) const {
   out.put("level1.newton_tangent_reusable", carried.loop.tangent_reusable);
   out.put("level1.lu_try_cholesky_before", carried.lu.try_cholesky_before);
   out.put("level1.lu_try_cholesky", carried.lu.try_cholesky);
-  // The factorized tangent as (row, column, value) triplets, column-major.
-  std::vector<double> rows, cols, values;
-  const Eigen::SparseMatrix<double>& K = carried.lu.matrix;
-  for (int k = 0; k < K.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(K, k); it; ++it) {
-      rows.push_back(static_cast<double>(it.row()));
-      cols.push_back(static_cast<double>(it.col()));
-      values.push_back(it.value());
-    }
-  out.put("level1.lu_size", static_cast<std::int64_t>(K.rows()));
-  out.put("level1.lu_rows", rows);
-  out.put("level1.lu_cols", cols);
-  out.put("level1.lu_values", values);
+  out.put("level1.lu_matrix", carried.lu.matrix);
 }
 
 void HydrostaticCavity::restore_state(CheckpointReader& in) {
@@ -94,22 +82,9 @@ void HydrostaticCavity::restore_state(CheckpointReader& in) {
   carried.loop.tangent_reusable = in.flag("level1.newton_tangent_reusable");
   carried.lu.try_cholesky_before = in.flag("level1.lu_try_cholesky_before");
   carried.lu.try_cholesky = in.flag("level1.lu_try_cholesky");
-  const std::int64_t n = in.integer("level1.lu_size");
-  const std::vector<double> rows = in.numbers("level1.lu_rows"),
-                            cols = in.numbers("level1.lu_cols");
-  const std::vector<double> values = in.numbers("level1.lu_values");
-  if (rows.size() != values.size() || cols.size() != values.size() || n < 0)
-    in.reject("the saved tangent's triplets do not match");
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(values.size());
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    if (!(rows[k] >= 0 && rows[k] < n && cols[k] >= 0 && cols[k] < n))
-      in.reject("the saved tangent has an entry outside its size");
-    triplets.emplace_back(static_cast<int>(rows[k]), static_cast<int>(cols[k]), values[k]);
-  }
-  carried.lu.matrix.resize(n, n);
-  carried.lu.matrix.setFromTriplets(triplets.begin(), triplets.end());
-  if (carried.loop.tangent_reusable && n != static_cast<std::int64_t>(problem_.free_dof_count()))
+  carried.lu.matrix = in.sparse("level1.lu_matrix");
+  const Eigen::Index n = carried.lu.matrix.rows();
+  if (carried.loop.tangent_reusable && n != static_cast<Eigen::Index>(problem_.free_dof_count()))
     in.reject("the saved tangent is not of this wall");
   solver_.restore(carried);
 }

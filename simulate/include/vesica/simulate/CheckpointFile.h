@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 #include <nlohmann/json.hpp>
 
 namespace vesica::simulate {
@@ -34,7 +35,10 @@ class CheckpointWriter {
     put(name, static_cast<std::int64_t>(value));
   }
   void put(const std::string& name, const std::vector<double>& values);
+  void put(const std::string& name, const std::vector<std::int64_t>& values);
   void put(const std::string& name, const std::vector<Eigen::Vector3d>& points);
+  // A square sparse matrix: its size, then its entries as rows, columns and values.
+  void put(const std::string& name, const Eigen::SparseMatrix<double>& matrix);
   void put(const std::string& name, const std::string& text);
   void put(const std::string& name, const char* text) { put(name, std::string(text)); }
   const std::string& bytes() const { return bytes_; }
@@ -54,7 +58,9 @@ class CheckpointReader {
   std::int64_t integer(const std::string& name);
   bool flag(const std::string& name) { return integer(name) != 0; }
   std::vector<double> numbers(const std::string& name);
+  std::vector<std::int64_t> integers(const std::string& name);
   std::vector<Eigen::Vector3d> points(const std::string& name);
+  Eigen::SparseMatrix<double> sparse(const std::string& name);
   std::string text(const std::string& name);
   // Throws unless every field was read (a state of another version or model).
   void finish() const;
