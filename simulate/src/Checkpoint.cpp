@@ -18,6 +18,26 @@ extern "C" void note_stop_signal(int signal) {
 
 struct sigaction g_previous_term, g_previous_int;
 
+std::filesystem::path frames_folder(const RunOptions::Checkpoints& options) {
+  return options.file.parent_path() / "frames";
+}
+
+// Hard-links (or copies, across file systems) every file under `from` to the same place
+// under `to` that is not there yet: frames are written once and never change.
+void link_files(const std::filesystem::path& from, const std::filesystem::path& to) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(from, ec)) return;
+  for (const auto& entry : fs::recursive_directory_iterator(from)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path target = to / fs::relative(entry.path(), from);
+    if (fs::exists(target, ec)) continue;
+    fs::create_directories(target.parent_path());
+    fs::create_hard_link(entry.path(), target, ec);
+    if (ec) fs::copy_file(entry.path(), target);
+  }
+}
+
 const char* signal_label(int signal) {
   return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
 }
@@ -33,6 +53,38 @@ Checkpointer::Checkpointer(const RunOptions::Checkpoints& options)
   sigaction(SIGTERM, &action, &g_previous_term);
   sigaction(SIGINT, &action, &g_previous_int);
   if (const char* k = std::getenv("VESICA_SIMULATE_STOP_AFTER_STEPS")) stop_after_ = std::atol(k);
+  std::error_code ec;  // a new run's frames replace any earlier run's
+  if (!options.resume) std::filesystem::remove_all(frames_folder(options), ec);
+}
+
+void Checkpointer::keep_outputs(const std::filesystem::path& output_dir) const {
+  if (!output_dir.empty()) link_files(output_dir, frames_folder(options_));
+}
+
+void Checkpointer::restore_outputs(const std::filesystem::path& output_dir) const {
+  if (!output_dir.empty()) link_files(frames_folder(options_), output_dir);
+}
+
+void put_series(CheckpointWriter& out, const std::string& name, const io::PvdSeries* series) {
+  const io::PvdSeries::Progress p = series ? series->progress() : io::PvdSeries::Progress{};
+  std::vector<double> times;
+  for (const auto& step : p.steps) times.push_back(step.first);
+  out.put(name + ".times", times);
+  for (const auto& step : p.steps) out.put(name + ".file", step.second);
+  out.put(name + ".fields", static_cast<int>(p.fields.size()));
+  for (const auto& field : p.fields) out.put(name + ".field", field);
+  out.put(name + ".largest_volume_ml", p.largest_volume_ml);
+  out.put(name + ".largest_volume_time_s", p.largest_volume_time_s);
+}
+
+void restore_series(CheckpointReader& in, const std::string& name, io::PvdSeries* series) {
+  io::PvdSeries::Progress p;
+  for (double t : in.numbers(name + ".times")) p.steps.emplace_back(t, in.text(name + ".file"));
+  const std::int64_t fields = in.integer(name + ".fields");
+  for (std::int64_t i = 0; i < fields; ++i) p.fields.push_back(in.text(name + ".field"));
+  p.largest_volume_ml = in.number(name + ".largest_volume_ml");
+  p.largest_volume_time_s = in.number(name + ".largest_volume_time_s");
+  if (series) series->resume(std::move(p));
 }
 
 Checkpointer::~Checkpointer() {

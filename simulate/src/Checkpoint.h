@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "vesica/io/PvdSeries.h"
 #include "vesica/simulate/CheckpointFile.h"
 #include "vesica/simulate/Cystometry.h"
 
@@ -32,6 +33,10 @@ class Checkpointer {
   bool due();
   // Writes the state of a run standing at time_s (s) in `phase`.
   void write(const CheckpointWriter& state, double time_s, const std::string& phase);
+  // The output folder's files so far (the series' frames), kept beside the checkpoint
+  // (hard links) before it is written, and put back into a resumed run's output folder.
+  void keep_outputs(const std::filesystem::path& output_dir) const;
+  void restore_outputs(const std::filesystem::path& output_dir) const;
   // Throws RunInterrupted (Cystometry.h) when a stop signal has arrived (after its checkpoint, if
   // any).
   void stop_if_signalled() const;
@@ -42,6 +47,11 @@ class Checkpointer {
   long steps_ = 0, stop_after_ = -1;
   double last_time_s_ = -1.0;  // of the last checkpoint written (s)
 };
+
+// A ParaView series' progress in a checkpoint (an empty one when series is null).
+void put_series(CheckpointWriter& out, const std::string& name, const io::PvdSeries* series);
+// Restores it into series (when not null).
+void restore_series(CheckpointReader& in, const std::string& name, io::PvdSeries* series);
 
 // The identity stored in a checkpoint for a run (options.identity) at time_s in phase.
 nlohmann::json checkpoint_identity(const RunOptions::Checkpoints& options, double time_s,

@@ -61,6 +61,7 @@ void CystometryProtocol::save_state(CheckpointWriter& out) const {
   out.put("protocol.history", flat_history(result_.history));
   out.put("protocol.notes", static_cast<int>(result_.notes.size()));
   for (const std::string& note : result_.notes) out.put("protocol.note", note);
+  put_series(out, "protocol.series", series_ ? &series_->series() : nullptr);
 }
 
 void CystometryProtocol::restore_state(CheckpointReader& in) {
@@ -92,6 +93,7 @@ void CystometryProtocol::restore_state(CheckpointReader& in) {
   const std::int64_t notes = in.integer("protocol.notes");
   result_.notes.clear();
   for (std::int64_t i = 0; i < notes; ++i) result_.notes.push_back(in.text("protocol.note"));
+  restore_series(in, "protocol.series", series_ ? &series_->series() : nullptr);
   resuming_ = true;
 }
 
@@ -105,6 +107,7 @@ bool CystometryProtocol::resume_if_asked() {
   restore_state(in);
   model_->restore_state(in);
   in.finish();
+  if (checkpointer_) checkpointer_->restore_outputs(options_.output_dir);  // the frames so far
   vesica::log()->info("resuming from the checkpoint at t = {:.6g} s", time_);
   return true;
 }
@@ -115,6 +118,7 @@ void CystometryProtocol::checkpoint_if_due() {
     CheckpointWriter out;
     save_state(out);
     model_->save_state(out);
+    checkpointer_->keep_outputs(options_.output_dir);  // the frames the checkpoint lists
     checkpointer_->write(out, time_, phase_name(static_cast<int>(phase_)));
   }
   checkpointer_->stop_if_signalled();

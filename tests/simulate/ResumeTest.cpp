@@ -122,13 +122,13 @@ struct CliRuns {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     mesh = (dir / "sphere.vtp").string();
   }
-  CommandResult simulate(const std::string& output, const std::string& extra,
-                         int stop_after = 0) const {
+  CommandResult simulate(const std::string& output, const std::string& extra, int stop_after = 0,
+                         bool series = false) const {
     const std::string env =
         stop_after ? "VESICA_SIMULATE_STOP_AFTER_STEPS=" + std::to_string(stop_after) + " " : "";
     return run_command(env + "timeout 120 " + bin + "/vesica-simulate " + mesh + " -o " +
-                       (dir / output).string() + " --capacity-ml 200 --no-series " + extra +
-                       " 2>&1");
+                       (dir / output).string() + " --capacity-ml 200 " +
+                       (series ? "" : "--no-series ") + extra + " 2>&1");
   }
   fs::path checkpoint(const std::string& output) const {
     return dir / ".vesica" / "checkpoints" / output / "checkpoint.bin";
@@ -143,15 +143,26 @@ int lines(const std::string& text) {
 
 TEST(Resume, AKilledRunExitsWithTheSignalsStatusAndResumesOnTheCommandLine) {
   CliRuns cli("resume-cli");
-  ASSERT_EQ(cli.simulate("whole", "").exit_code, 0);
-  const CommandResult stopped = cli.simulate("resumed", "", 6);
+  ASSERT_EQ(cli.simulate("whole", "", 0, true).exit_code, 0);
+  const CommandResult stopped = cli.simulate("resumed", "", 6, true);
   EXPECT_EQ(stopped.exit_code, 128 + 15) << stopped.output;  // SIGTERM's conventional status
   EXPECT_FALSE(fs::exists(cli.dir / "resumed")) << "an interrupted run wrote its output";
   ASSERT_TRUE(fs::exists(cli.checkpoint("resumed"))) << stopped.output;
-  const CommandResult resumed = cli.simulate("resumed", "--resume");
+  const CommandResult resumed = cli.simulate("resumed", "--resume", 0, true);
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_EQ(file_text(cli.dir / "whole" / "history.csv"),
             file_text(cli.dir / "resumed" / "history.csv"));
+  // The wall's frames: those before the checkpoint were kept beside it and put back.
+  EXPECT_EQ(file_text(cli.dir / "whole" / "series.pvd"),
+            file_text(cli.dir / "resumed" / "series.pvd"));
+  int frames = 0;
+  for (const auto& frame : fs::directory_iterator(cli.dir / "whole" / "series")) {
+    ++frames;
+    EXPECT_EQ(file_text(frame.path()),
+              file_text(cli.dir / "resumed" / "series" / frame.path().filename()))
+        << frame.path().filename();
+  }
+  EXPECT_GT(frames, 2);
   EXPECT_FALSE(fs::exists(cli.checkpoint("resumed"))) << "a finished run keeps its checkpoint";
 }
 

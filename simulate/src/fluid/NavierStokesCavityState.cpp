@@ -6,9 +6,11 @@
 // Pa, volumes in m³.
 #include <stdexcept>
 
+#include "Checkpoint.h"
 #include "WallSurroundings.h"
 #include "fluid/NavierStokesCavity.h"
 #include "vesica/simulate/CheckpointFile.h"
+#include "vesica/simulate/fluid/FluidVtuSeries.h"
 
 namespace vesica::simulate::fluid {
 namespace {
@@ -144,6 +146,7 @@ void NavierStokesCavity::save_state(CheckpointWriter& out) const {
   out.put("level2.step_seconds", step_seconds_);
   out.put("level2.remeshes", remeshes_);
   put_statistics(out, "level2.newton", statistics_);
+  put_series(out, "level2.series", fluid_series_ ? &fluid_series_->series() : nullptr);
 }
 
 void NavierStokesCavity::restore_state(CheckpointReader& in) {
@@ -174,6 +177,7 @@ void NavierStokesCavity::restore_state(CheckpointReader& in) {
   step_seconds_ = in.number("level2.step_seconds");
   remeshes_ = static_cast<int>(in.integer("level2.remeshes"));
   statistics_ = statistics_of(in, "level2.newton");
+  restore_series(in, "level2.series", fluid_series_ ? &fluid_series_->series() : nullptr);
 }
 
 }  // namespace vesica::simulate::fluid
