@@ -3,37 +3,11 @@
 #include <sstream>
 
 #include "ReportParts.h"
+#include "vesica/compare/PageCheckScript.h"
 #include "vesica/compare/SvgPlot.h"
 
 namespace vesica::compare {
 namespace {
-
-// Records on the page's <body> (attributes, nothing visible) how many plots drew data and
-// how many elements stick out of the window, and writes script errors into #js-errors,
-// so that a headless browser's DOM dump shows all three.
-const char* kCheckScript = R"(<script>
-window.onerror = function (msg) {
-  var e = document.getElementById('js-errors');
-  e.hidden = false;
-  e.textContent += 'error: ' + msg + '\n';
-};
-window.addEventListener('load', function () {
-  var plots = document.querySelectorAll('svg.plot'), drawn = 0, wide = 0;
-  plots.forEach(function (svg) {
-    var box = svg.getBoundingClientRect();
-    if (svg.querySelector('.series') && box.width > 0 && box.height > 0) drawn++;
-  });
-  document.querySelectorAll('body *').forEach(function (el) {
-    if (el.getBoundingClientRect().right > document.documentElement.clientWidth + 0.5) wide++;
-  });
-  document.body.dataset.plots = plots.length;
-  document.body.dataset.drawn = drawn;
-  document.body.dataset.overflowing = wide;
-  document.body.dataset.scrollWidth = document.documentElement.scrollWidth;
-  document.body.dataset.windowWidth = document.documentElement.clientWidth;
-});
-</script>
-)";
 
 const char* kStyle = R"(<style>
 body { font-family: sans-serif; margin: 16px auto; padding: 0 16px; color: #222;
@@ -81,7 +55,10 @@ std::string report_html(const ReportInputs& in) {
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
     << "<link rel=\"icon\" href=\"data:,\">\n"
     << "<title>vesica: urodynamic report</title>\n"
-    << kStyle << kCheckScript << "</head><body>\n";
+    << kStyle
+    << page_check_script(
+           "  document.body.dataset.scrollWidth = document.documentElement.scrollWidth;\n")
+    << "</head><body>\n";
   o << "<h1>Urodynamics: " << (in.measured ? "measured cystometry" : "")
     << (in.measured && in.simulated ? " and " : "") << (in.simulated ? "bladder model" : "")
     << "</h1>\n";

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "vesica/compare/PageCheckScript.h"
 #include "vesica/compare/SvgPlot.h"
 #include "vesica/pipelines/PouchPicture.h"
 
@@ -242,31 +243,10 @@ std::string notes(const StudyReport& report) {
   return o.str();
 }
 
-// Puts script errors on the page and records on <body> how many plots drew visible series
-// and how many elements stick out of the window, so a headless browser's DOM dump shows all.
-const char* kCheckScript = R"(<script>
-window.onerror = function (msg) {
-  var e = document.getElementById('js-errors');
-  e.hidden = false;
-  e.textContent += 'error: ' + msg + '\n';
-};
-window.addEventListener('load', function () {
-  var plots = document.querySelectorAll('svg.plot'), drawn = 0, wide = 0;
-  plots.forEach(function (svg) {
-    var box = svg.getBoundingClientRect();
-    if (svg.querySelector('.series') && box.width > 0 && box.height > 0) drawn++;
-  });
-  document.querySelectorAll('body *').forEach(function (el) {
-    if (el.getBoundingClientRect().right > document.documentElement.clientWidth + 0.5) wide++;
-  });
-  var table = document.getElementById('study-table').getBoundingClientRect();
-  document.body.dataset.plots = plots.length;
-  document.body.dataset.drawn = drawn;
-  document.body.dataset.overflowing = wide;
+// How far the study table reaches, to check that it fits the window.
+const char* kTableReach =
+    R"(  var table = document.getElementById('study-table').getBoundingClientRect();
   document.body.dataset.tableRight = Math.ceil(table.right);
-  document.body.dataset.windowWidth = document.documentElement.clientWidth;
-});
-</script>
 )";
 
 const char* kStyle = R"(<style>
@@ -301,7 +281,7 @@ std::string study_html(const StudyReport& report, const std::string& study_name)
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
     << "<link rel=\"icon\" href=\"data:,\">\n"  // no favicon request, so no console error
     << "<title>vesica study: " << xml_escape(study_name) << "</title>\n"
-    << kStyle << kCheckScript << "</head><body>\n";
+    << kStyle << compare::page_check_script(kTableReach) << "</head><body>\n";
   o << "<h1>Study: " << xml_escape(study_name) << "</h1>\n" << answer_section(report);
   o << table(report) << notes(report);
   o << "<h2>Curves</h2>\n<div class=\"plots\">\n"

@@ -90,7 +90,7 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
   t.number("residual_ml", w.residual_ml, "ml", NumberRange::at_least(1).at_most(5000),
            "stress-free (residual) volume of the scaled reference");
   t.number("image_pressure_cmh2o", p.image_pressure_cmh2o, "cmH2O",
-           NumberRange::at_least(0).at_most(100),
+           NumberRange::at_least(0).at_most(200),
            "pressure of the imaged bladder (reference prestress)");
   t.choice<Posture>("posture", s.posture,
                     {{"supine", Posture::Supine}, {"sitting", Posture::Sitting}},
@@ -105,9 +105,9 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
   t.number("wall_density_kg_m3", p.wall_density, "kg/m3", NumberRange::at_least(800).at_most(1500),
            "density of the wall (weight and inertia)");
   t.number("support_kpa_per_mm", p.support_kpa_per_mm, "kPa/mm",
-           NumberRange::at_least(0).at_most(100), "spring stiffness of the support region");
+           NumberRange::at_least(0).at_most(1000), "spring stiffness of the support region");
   t.number("wall_drag_pa_s_per_m", p.wall_drag_pa_s_per_m, "Pa*s/m",
-           NumberRange::at_least(0).at_most(1e7),
+           NumberRange::at_least(0).at_most(1e9),
            "viscous drag of the surrounding tissue on the wall");
   t.flag_off("no_wrinkling", p.wrinkling,
              "let the wall carry compression instead of wrinkling (tension field)");
@@ -118,32 +118,33 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
   t.number("start_ml", p.start_ml, "ml", volume, "volume at the start of filling");
   t.number("capacity_ml", p.capacity_ml, "ml", volume, "cystometric capacity (end of filling)");
   t.number("fill_rate_ml_min", p.fill_rate_ml_min, "ml/min",
-           NumberRange::at_least(1).at_most(500).because("at 0 filling never ends"),
+           NumberRange::at_least(1).at_most(1000).because(
+               "at 0 filling never ends; cystometry fills at 10-100 ml/min"),
            "infusion rate");
   t.number("hold_s", p.hold_s, "s",
            NumberRange::at_least(0).at_most(3600).because(
                "an hour of hold is beyond any cystometry (and writes a frame every 10 s)"),
            "hold at capacity before voiding");
-  t.number("pabd_cmh2o", p.pabd_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(200),
+  t.number("pabd_cmh2o", p.pabd_cmh2o, "cmH2O", NumberRange::at_least(-20).at_most(200),
            "resting abdominal pressure");
   t.flag_off("no_void", p.void_after_fill, "stop after filling (and hold)");
-  t.number("p_open_cmh2o", p.p_open_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(200),
+  t.number("p_open_cmh2o", p.p_open_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(300),
            "urethral opening pressure (Pves)");
-  t.number("p_close_cmh2o", p.p_close_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(200),
+  t.number("p_close_cmh2o", p.p_close_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(300),
            "urethral closing pressure (Pves), at most p_open_cmh2o");
   t.number("urethra_half_open_cmh2o", p.urethra_half_open_cmh2o, "cmH2O",
            NumberRange::at_least(0).at_most(100),
            "collapsible urethra: pressure above closing at which its lumen is about half "
            "open (0: rigid, the quadratic law)");
-  t.number("r1", p.r1_cmh2o_s_per_ml, "cmH2O*s/ml", NumberRange::at_least(0).at_most(20),
+  t.number("r1", p.r1_cmh2o_s_per_ml, "cmH2O*s/ml", NumberRange::at_least(0).at_most(100),
            "urethral linear resistance R1");
-  t.number("r2", p.r2_cmh2o_s2_per_ml2, "cmH2O*s2/ml2", NumberRange::at_least(0).at_most(5),
+  t.number("r2", p.r2_cmh2o_s2_per_ml2, "cmH2O*s2/ml2", NumberRange::at_least(0).at_most(100),
            "urethral quadratic resistance R2");
   t.choice<VoidingDrive>(
       "drive", p.drive,
       {{"detrusor", VoidingDrive::Detrusor}, {"straining", VoidingDrive::Straining}},
       "what voids the bladder: the detrusor's contraction or abdominal straining");
-  t.number("straining_kpa", p.straining_kpa, "kPa", NumberRange::at_least(0).at_most(20),
+  t.number("straining_kpa", p.straining_kpa, "kPa", NumberRange::at_least(0).at_most(50),
            "abdominal straining pressure at full activation (drive straining)");
   t.number("activation_onset_s", p.activation_onset_s, "s", NumberRange::at_least(0).at_most(60),
            "time constant of the drive's activation (0: at once)");
@@ -167,10 +168,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
             "volume (seconds); 2: Navier-Stokes urine on the tetrahedra of vesica-mesh "
             "--fluid (velocity, wall shear; minutes)");
   t.number("fluid_dt_s", r.level2.fill_dt_s, "s",
-           NumberRange::greater_than(0).at_most(10).or_value(
+           NumberRange::at_least(1e-3).at_most(60).or_value(
                0, "adaptive: growing after easy steps up to max_fill_step_ml"),
            "level 2: time step while filling");
-  t.number("void_dt_s", r.level2.void_dt_s, "s", NumberRange::greater_than(0).at_most(1),
+  t.number("void_dt_s", r.level2.void_dt_s, "s", NumberRange::at_least(1e-3).at_most(1),
            "level 2: time step while voiding");
   t.number("urine_viscosity_pa_s", r.level2.urine_viscosity, "Pa*s",
            NumberRange::at_least(1e-4).at_most(1), "level 2: urine viscosity");

@@ -33,7 +33,7 @@ TEST(SimulateCli, NoInfusionIsAOneLineUsageErrorAtBothLevels) {
     EXPECT_EQ(r.exit_code, 2) << "level " << level << ": " << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1)
         << "level " << level << ": " << r.output;
-    EXPECT_NE(r.output.find("--fill-rate-ml-min 0 is outside [1, 500] ml/min: at 0 filling never "
+    EXPECT_NE(r.output.find("--fill-rate-ml-min 0 is outside [1, 1000] ml/min: at 0 filling never "
                             "ends"),
               std::string::npos)
         << r.output;
