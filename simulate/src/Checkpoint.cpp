@@ -65,6 +65,22 @@ void Checkpointer::restore_outputs(const std::filesystem::path& output_dir) cons
   if (!output_dir.empty()) link_files(frames_folder(options_), output_dir);
 }
 
+void put_statistics(CheckpointWriter& out, const std::string& name, const StepStatistics& s) {
+  out.put(name + ".steps", s.steps);
+  out.put(name + ".iterations", s.iterations);
+  out.put(name + ".cutbacks", s.cutbacks);
+  out.put(name + ".max_iterations", s.max_iterations);
+}
+
+StepStatistics statistics_of(CheckpointReader& in, const std::string& name) {
+  StepStatistics s;
+  s.steps = static_cast<int>(in.integer(name + ".steps"));
+  s.iterations = static_cast<int>(in.integer(name + ".iterations"));
+  s.cutbacks = static_cast<int>(in.integer(name + ".cutbacks"));
+  s.max_iterations = static_cast<int>(in.integer(name + ".max_iterations"));
+  return s;
+}
+
 void put_series(CheckpointWriter& out, const std::string& name, const io::PvdSeries* series) {
   const io::PvdSeries::Progress p = series ? series->progress() : io::PvdSeries::Progress{};
   std::vector<double> times;

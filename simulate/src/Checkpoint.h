@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "StepStatistics.h"
 #include "vesica/io/PvdSeries.h"
 #include "vesica/simulate/CheckpointFile.h"
 #include "vesica/simulate/Cystometry.h"
@@ -47,6 +48,10 @@ class Checkpointer {
   long steps_ = 0, stop_after_ = -1;
   double last_time_s_ = -1.0;  // of the last checkpoint written (s)
 };
+
+// A model's Newton counters in a checkpoint, and read back.
+void put_statistics(CheckpointWriter& out, const std::string& name, const StepStatistics& s);
+StepStatistics statistics_of(CheckpointReader& in, const std::string& name);
 
 // A ParaView series' progress in a checkpoint (an empty one when series is null).
 void put_series(CheckpointWriter& out, const std::string& name, const io::PvdSeries* series);

@@ -4,6 +4,7 @@
 // Pa, volumes in m³, flows in m³/s.
 #include <stdexcept>
 
+#include "Checkpoint.h"
 #include "HydrostaticCavity.h"
 #include "vesica/simulate/CheckpointFile.h"
 
@@ -28,10 +29,7 @@ void HydrostaticCavity::save_state(CheckpointWriter& out) const {
     out.put("level1.velocity", dynamics_->velocity());
     out.put("level1.acceleration", dynamics_->acceleration());
   }
-  out.put("level1.steps", statistics_.steps);
-  out.put("level1.iterations", statistics_.iterations);
-  out.put("level1.cutbacks", statistics_.cutbacks);
-  out.put("level1.max_iterations", statistics_.max_iterations);
+  put_statistics(out, "level1.newton", statistics_);
   out.put("level1.failed_attempts", failed_attempts_);
   const NewtonSolver::Carried carried = solver_.carried();
   out.put("level1.newton_eta", carried.loop.eta);
@@ -72,10 +70,7 @@ void HydrostaticCavity::restore_state(CheckpointReader& in) {
   } catch (const std::invalid_argument& e) {
     in.reject(e.what());
   }
-  statistics_.steps = static_cast<int>(in.integer("level1.steps"));
-  statistics_.iterations = static_cast<int>(in.integer("level1.iterations"));
-  statistics_.cutbacks = static_cast<int>(in.integer("level1.cutbacks"));
-  statistics_.max_iterations = static_cast<int>(in.integer("level1.max_iterations"));
+  statistics_ = statistics_of(in, "level1.newton");
   failed_attempts_ = static_cast<int>(in.integer("level1.failed_attempts"));
   NewtonSolver::Carried carried;
   carried.loop.eta = in.number("level1.newton_eta");

@@ -31,24 +31,6 @@ fs::path sphere_pipeline(const fs::path& dir) {
   return dir / "p.yaml";
 }
 
-pid_t start_run(const fs::path& file, const fs::path& err) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const std::string vesica = (bin_dir() / "vesica").string();
-    std::freopen(err.c_str(), "w", stderr);
-    std::freopen("/dev/null", "w", stdout);
-    ::execl(vesica.c_str(), vesica.c_str(), "run", file.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
-}
-
-int wait_exit(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 }  // namespace
 
 TEST(RunnerResume, ASimulationInterruptedMidFillingResumesToTheUninterruptedHistory) {

@@ -42,22 +42,6 @@ std::vector<std::array<int, 4>> tets_of(const std::vector<std::int64_t>& flat, s
   return tets;
 }
 
-void put_statistics(CheckpointWriter& out, const std::string& name, const StepStatistics& s) {
-  out.put(name + ".steps", s.steps);
-  out.put(name + ".iterations", s.iterations);
-  out.put(name + ".cutbacks", s.cutbacks);
-  out.put(name + ".max_iterations", s.max_iterations);
-}
-
-StepStatistics statistics_of(CheckpointReader& in, const std::string& name) {
-  StepStatistics s;
-  s.steps = static_cast<int>(in.integer(name + ".steps"));
-  s.iterations = static_cast<int>(in.integer(name + ".iterations"));
-  s.cutbacks = static_cast<int>(in.integer(name + ".cutbacks"));
-  s.max_iterations = static_cast<int>(in.integer(name + ".max_iterations"));
-  return s;
-}
-
 }  // namespace
 
 void FluidWallCoupling::save_state(CheckpointWriter& out) const {
