@@ -74,7 +74,7 @@ class CheckpointReader {
 };
 
 struct CheckpointFile {
-  nlohmann::json identity;
+  nlohmann::json identity = nlohmann::json::object();
   std::string state;  // for a CheckpointReader
 };
 
