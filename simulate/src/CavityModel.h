@@ -28,6 +28,9 @@
 
 namespace vesica::simulate {
 
+class CheckpointWriter;
+class CheckpointReader;
+
 // The protocol's time-dependent loads at one instant.
 struct ProtocolLoads {
   double pabd_pa = 0.0;     // abdominal pressure at the reference height, straining included
@@ -115,6 +118,13 @@ class CavityModel {
   virtual void finish_frames() {}
   virtual std::vector<std::string> take_notes() { return {}; }
   virtual std::string progress_label() const { return ""; }
+
+  // Checkpoints (docs/simulate.md, "Checkpoint and resume"): whether the model can save
+  // its state between two steps so exactly that the run continues bit for bit, and the
+  // save and restore (on a model built from the same wall, material and settings).
+  virtual bool saves_state() const { return false; }
+  virtual void save_state(CheckpointWriter& /*out*/) const {}
+  virtual void restore_state(CheckpointReader& /*in*/) {}
 };
 
 }  // namespace vesica::simulate

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "Checkpoint.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/CystometrySummary.h"
@@ -100,14 +101,19 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
     last = now;
     return s;
   };
+  if (!options_.checkpoints.file.empty() && model.saves_state())
+    checkpointer_ = std::make_unique<Checkpointer>(options_.checkpoints);
   try {
-    settle();
-    phase_seconds_["settle"] = lap();
-    fill();
-    if (settings_.hold_s > 0.0) hold();
-    phase_seconds_["filling"] = lap();
+    if (!resume_if_asked()) {
+      settle();
+      phase_seconds_["settle"] = lap();
+    }
+    if (phase_ <= Phase::Filling) fill();
+    if (settings_.hold_s > 0.0 && phase_ <= Phase::Hold) hold();
+    phase_seconds_["filling"] += lap();
     capacity_index_ = result_.history.size() - 1;
     filled_ = true;
+    phase_ = Phase::Voiding;
     if (settings_.void_after_fill && !options_.filling_only) void_bladder();
     phase_seconds_["voiding"] = lap();
     result_.completed = true;
@@ -203,6 +209,8 @@ void CystometryProtocol::fill() {
   const double target = units::m3_from_ml(settings_.capacity_ml - settings_.start_ml);
   const double dt_max = units::m3_from_ml(options_.max_fill_step_ml) / q_in;
   double dt = rules_.fixed_fill_step_s > 0.0 ? rules_.fixed_fill_step_s : dt_max / 2;
+  if (std::exchange(resuming_, false)) dt = step_s_;
+  phase_ = Phase::Filling;
   while (infused_ < target * (1.0 - 1e-12)) {
     if (rules_.fixed_fill_step_s > 0.0) dt = rules_.fixed_fill_step_s;
     dt = std::min(dt, (target - infused_) / q_in);
@@ -212,17 +220,26 @@ void CystometryProtocol::fill() {
     // only that this point was hard).
     if (rules_.fixed_fill_step_s <= 0.0 && iterations <= kEasyIterations)
       dt = std::min(kFillGrowth * dt, dt_max);
+    step_s_ = dt;
+    checkpoint_if_due();
   }
 }
 
 void CystometryProtocol::hold() {
-  const double t_end = time_ + settings_.hold_s;
-  double dt = rules_.fixed_fill_step_s > 0.0 ? rules_.fixed_fill_step_s
+  if (!std::exchange(resuming_, false)) {
+    hold_end_s_ = time_ + settings_.hold_s;
+    step_s_ = rules_.fixed_fill_step_s > 0.0 ? rules_.fixed_fill_step_s
                                              : std::min(settings_.hold_s, kHoldStepS);
+  }
+  phase_ = Phase::Hold;
+  const double t_end = hold_end_s_;
+  double dt = step_s_;
   while (time_ < t_end - 1e-9) {
     dt = std::min(dt, t_end - time_);
     advance(dt, 0.0, false);
     record();
+    step_s_ = dt;
+    checkpoint_if_due();
   }
 }
 
@@ -270,6 +287,7 @@ void CystometryProtocol::void_bladder() {
       break;
     }
     record();
+    if (checkpointer_) checkpointer_->stop_if_signalled();  // no checkpoints while voiding
     peak_pves_ = std::max(peak_pves_, model_->pves());
     const double Q = model_->outflow();
     if (urethra_open_) {

@@ -186,6 +186,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
       {{"krylov", Level2LinearSolver::Krylov}, {"direct", Level2LinearSolver::Direct}},
       "level 2: krylov (GMRES on a reused LU) or direct (an LU every Newton iteration)");
   t.flag_off("no_series", r.write_series, "do not write the .pvd/.vtu series");
+  t.number("checkpoint_minutes", r.checkpoints.interval_min, "min",
+           NumberRange::greater_than(0).at_most(1440),
+           "compute time between two checkpoints of a level-1 or level-2 run, which --resume "
+           "continues from (docs/simulate.md)");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <utility>
 
@@ -33,6 +34,14 @@ constexpr double kVoidFrameIntervalS = 0.5;
 // level 1's, whose quasi-static wall has no other limit.
 constexpr double kVoidStepMl = 20.0;
 constexpr double kSlackVoidStepMl = 5.0;
+
+// Fault injection for tests of a resumed run (docs/simulate.md, "Checkpoint and resume"):
+// VESICA_SIMULATE_REMESH_AT_S=t rebuilds the tetrahedra once, at the first step ending at
+// or after t (s), whatever their quality.
+bool remesh_forced(double time_s, int remeshes) {
+  const char* t = std::getenv("VESICA_SIMULATE_REMESH_AT_S");
+  return t && remeshes == 0 && time_s >= std::atof(t);
+}
 
 std::vector<std::array<int, 3>> region_faces(const WallModel& wall, Region region) {
   std::vector<std::array<int, 3>> faces;
@@ -280,7 +289,7 @@ void NavierStokesCavity::check_mesh(double time_s) {
   min_quality_ = std::min(min_quality_, q);
   const double threshold =
       built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
-  if (q >= threshold) return;
+  if (q >= threshold && !remesh_forced(time_s, remeshes_)) return;
   remesh(time_s, q);
 }
 

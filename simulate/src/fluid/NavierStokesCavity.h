@@ -68,6 +68,12 @@ class NavierStokesCavity final : public CavityModel {
   void add_frame(double time_s, bool write) override;
   void finish_frames() override;
   std::vector<std::string> take_notes() override;
+  // Checkpoints (NavierStokesCavityState.cpp): between two filling or holding steps (the
+  // urethra closed, level 2 itself running): the wall's history, the coupling's state
+  // (remeshed tetrahedra included), bookkeeping and counters.
+  bool saves_state() const override { return true; }
+  void save_state(CheckpointWriter& out) const override;
+  void restore_state(CheckpointReader& in) override;
   std::string progress_label() const override {
     return collapse_ ? " (level 1 below the stress-free volume)" : " (level 2)";
   }

@@ -133,6 +133,16 @@ struct RunOptions {
   // of the protocol done (filling up to 0.8, voiding after); the executable draws it.
   std::function<void(const std::string& step, double fraction)> on_progress;
   Level2Options level2;
+  // Checkpoints of a long run (docs/simulate.md, "Checkpoint and resume"): written to
+  // `file` (empty: none) every interval_min minutes of compute and when SIGTERM or SIGINT arrives,
+  // with `identity` (JSON text: the inputs' hashes and the parameters), which a resumed run
+  // must match; resume: continue from the file instead of from the start.
+  struct Checkpoints {
+    std::filesystem::path file;
+    double interval_min = 5.0;
+    std::string identity;
+    bool resume = false;
+  } checkpoints;
 };
 
 }  // namespace vesica::simulate

@@ -39,6 +39,8 @@ class FluidVtuSeries {
   void finish() { series_.finish(); }
 
   std::filesystem::path pvd_path() const { return series_.pvd_path(); }
+  io::PvdSeries& series() { return series_; }  // its progress, for checkpoints
+  const io::PvdSeries& series() const { return series_; }
 
  private:
   io::PvdSeries series_;
