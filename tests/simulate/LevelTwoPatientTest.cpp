@@ -155,20 +155,25 @@ void expect_mass_balance(const fs::path& run, double capacity_ml) {
     EXPECT_NEAR(row.volume, 50.0 + row.infused - row.voided, 1e-9 * capacity_ml) << "t = " << row.t;
 }
 
+// The same protocol at level 2 (into dir/level2) and level 1 (into dir/level1, no series),
+// the comparison every test here makes.
+void simulate_both_levels(const std::string& mesh, const fs::path& dir,
+                          const std::string& protocol) {
+  const std::string simulate = bin_dir().string() + "/vesica-simulate " + mesh + " -o ";
+  CommandResult r = run_command(simulate + (dir / "level2").string() + " --level 2" + protocol);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_command(simulate + (dir / "level1").string() + " --no-series" + protocol);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
 }  // namespace
 
 TEST(LevelTwoPatient, RealCtBladderFillsAndVoidsLikeLevelOne) {
   VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
   const fs::path dir = scratch_dir("simulate-level2-patient");
-  const std::string bin = bin_dir().string();
   ASSERT_NO_FATAL_FAILURE(mesh_coarse_bladder(label, dir));
   const std::string mesh = (dir / "bladder.vtu").string();
-  CommandResult r = run_command(bin + "/vesica-simulate " + mesh + " -o " +
-                                (dir / "level2").string() + " --level 2" + kProtocol);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_command(bin + "/vesica-simulate " + mesh + " -o " + (dir / "level1").string() +
-                  " --no-series" + kProtocol);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_NO_FATAL_FAILURE(simulate_both_levels(mesh, dir, kProtocol));
 
   const auto s2 = read_json(dir / "level2" / "summary.json");
   const auto s1 = read_json(dir / "level1" / "summary.json");
@@ -226,12 +231,7 @@ TEST(LevelTwoPatient, DetrusorVoidsTheRealCtBladderLikeLevelOne) {
   constexpr double kDetrusorCapacityMl = 150.0;
   const std::string protocol = " --capacity-ml 150 --residual-ml 45 --json";
   const std::string mesh = (dir / "bladder.vtu").string();
-  CommandResult r = run_command(bin + "/vesica-simulate " + mesh + " -o " +
-                                (dir / "level2").string() + " --level 2" + protocol);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_command(bin + "/vesica-simulate " + mesh + " -o " + (dir / "level1").string() +
-                  " --no-series" + protocol);
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_NO_FATAL_FAILURE(simulate_both_levels(mesh, dir, protocol));
   const auto s2 = read_json(dir / "level2" / "summary.json");
   const auto s1 = read_json(dir / "level1" / "summary.json");
   std::cout << "[ level 2, detrusor ] Pdet at capacity " << s2["pdet_at_capacity_cmh2o"]
@@ -261,7 +261,8 @@ TEST(LevelTwoPatient, DetrusorVoidsTheRealCtBladderLikeLevelOne) {
 
   // What only level 2 shows: the report of the run pictures the jet into the urethra at
   // Qmax, on a colour bar that ends at that frame's largest urine speed.
-  r = run_command(bin + "/vesica-compare --simulated " + (dir / "level2" / "history.csv").string() +
+  const CommandResult r =
+      run_command(bin + "/vesica-compare --simulated " + (dir / "level2" / "history.csv").string() +
                   " -o " + (dir / "report").string() + " --no-pdf");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream page_in(dir / "report" / "index.html");
