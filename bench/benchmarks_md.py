@@ -142,6 +142,30 @@ def level2(d):
                  None if d.get("completed", True) else f"failed: {d.get('failure')}"))
 
 
+def level2_voided(data):
+    """The level-2 run when it voided (not LEVEL2_NO_VOID), else None (no row)."""
+    d = data.get("level2_real_bladder") or {}
+    return d if (d.get("voiding_simulated_s") or 0) > 1.0 else None
+
+
+def level2_whole(d):
+    """The whole cystometry (settle, filling, voiding) against its own simulated duration."""
+    compute = sum(d.get(k) or 0 for k in ("settle_level1_s", "filling_s", "voiding_s"))
+    simulated = (d.get("filling_simulated_s") or 0) + (d.get("voiding_simulated_s") or 0)
+    jet = d.get("jet") or {}
+    return (f"{num(d.get('triangles'))} triangles, {num(d.get('tetrahedra'))} tetrahedra",
+            compute, simulated,
+            join(f"simulated/compute {num(d.get('cystometry_simulated_per_compute'), 3)}",
+                 f"filling {seconds(d.get('filling_s'))} for {num(d.get('filling_simulated_s'))} s",
+                 f"voiding ({d.get('voiding_drive', '?')}) {seconds(d.get('voiding_s'))} for "
+                 f"{num(d.get('voiding_simulated_s'), 3)} s in {d.get('voiding_rows', '?')} steps",
+                 f"Qmax {num(d.get('qmax_ml_s'), 4)} ml/s", f"PVR {num(d.get('pvr_ml'), 3)} ml",
+                 f"peak outlet velocity {num(jet.get('peak_outlet_velocity_m_s'), 3)} m/s"
+                 if jet else None,
+                 f"linear solver {(d.get('newton') or {}).get('linear_solver', {}).get('method', '?')}",
+                 None if d.get("completed", True) else f"failed: {d.get('failure')}"))
+
+
 def compare_report(d):
     return ("shared recording + synthetic history", d.get("report_seconds"),
             d.get("report_target_seconds"),
@@ -217,6 +241,9 @@ CASES = [
     ("simulate", "cystometry_2300_triangles", "simulate: cystometry 50 → 350 ml and voiding, sphere", cystometry, True),
     ("simulate", "cystometry_17000_triangles", "simulate: cystometry 50 → 350 ml and voiding, fine sphere", cystometry, True),
     ("simulate_level2", "level2_real_bladder", "simulate --level 2: 50 → 350 ml and voiding, real CT bladder", level2, True),
+    ("simulate_level2", level2_voided,
+     "simulate --level 2: the whole cystometry (50 → 350 ml, detrusor voiding to the residual) against its simulated duration",
+     level2_whole, False),
     ("compare", None, "compare: ICS parameters, metrics and report", compare_report, True),
     ("compare", "calibration_sphere_2312_triangles", "compare: calibration of μ, sphere", calibration, True),
     ("compare", "calibration_whole_recording_ct_2474_triangles",

@@ -1,5 +1,6 @@
 #include "vesica/compare/CompareRun.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -52,6 +53,17 @@ std::optional<WallStressPicture> capacity_picture(const CompareOptions& o,
     WallStressPicture from_series = make_wall_stress_picture(*frame, self);
     if (!from_series.png.empty() || !picture) return from_series;
   }
+  return picture;
+}
+
+// Level 2's jet at Qmax, from fluid.pvd beside history.csv (none at level 1).
+std::optional<FluidJetPicture> jet_picture(const CompareOptions& o, const RecordingAnalysis* sim) {
+  if (!sim || sim->recording.flow_ml_s.empty()) return std::nullopt;
+  const auto& flow = sim->recording.flow_ml_s;
+  const auto qmax = std::max_element(flow.begin(), flow.end()) - flow.begin();
+  auto picture = fluid_jet_picture_at(fs::path(o.simulated).parent_path(),
+                                      sim->recording.time_s[static_cast<std::size_t>(qmax)]);
+  if (picture && picture->svg.empty()) log()->warn("{}", picture->message);
   return picture;
 }
 
@@ -199,6 +211,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     PhaseTimer t(record, "render");
     in.wall_stress = capacity_picture(o, simulated.get());
     if (in.wall_stress && in.wall_stress->png.empty()) log()->warn("{}", in.wall_stress->message);
+    in.fluid_jet = jet_picture(o, simulated.get());
   }
 
   nlohmann::json metrics;

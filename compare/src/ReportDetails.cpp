@@ -118,6 +118,14 @@ std::string wall_stress_section(const ReportInputs& in) {
          stress_table(w) + "</div>\n";
 }
 
+std::string fluid_jet_section(const ReportInputs& in) {
+  const FluidJetPicture& j = *in.fluid_jet;
+  if (j.svg.empty()) return "<p class=\"missing\">" + xml_escape(j.message) + "</p>\n";
+  return "<figure>" + j.svg + "<figcaption>" + xml_escape(j.message) +
+         ": each section of a urine tetrahedron coloured by the mean speed of its corners "
+         "(viridis, 0 to the frame's maximum).</figcaption></figure>\n";
+}
+
 std::string details_section(const ReportInputs& in) {
   std::ostringstream o;
   o << "<section class=\"together\"><h2>Model against measurement</h2>\n"

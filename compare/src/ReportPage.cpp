@@ -68,6 +68,7 @@ std::string report_html(const ReportInputs& in) {
   o << section("Parameters", parameter_section(in), true);
   o << section("Obstruction and contractility", criteria_section(in), true);
   o << section("Wall stress at capacity", wall_stress_section(in), true);
+  if (in.fluid_jet) o << section("The jet into the urethra (level 2)", fluid_jet_section(in), true);
   o << details_section(in);
   o << "<pre id=\"js-errors\" hidden></pre>\n</body></html>\n";
   return o.str();

@@ -26,6 +26,8 @@ std::string trace_section(const ReportInputs& in);
 std::string plots_section(const ReportInputs& in);
 std::string parameter_section(const ReportInputs& in);
 std::string criteria_section(const ReportInputs& in);
+// Level 2's jet at Qmax (in.fluid_jet set): the SVG and its caption, or why none.
+std::string fluid_jet_section(const ReportInputs& in);
 std::string wall_stress_section(const ReportInputs& in);
 std::string details_section(const ReportInputs& in);
 

@@ -13,6 +13,7 @@
 #include "vesica/pipelines/ChildProcess.h"
 #include "vesica/pipelines/EditBackup.h"
 #include "vesica/pipelines/SignalRelay.h"
+#include "vesica/pipelines/StageCheckpoint.h"
 #include "vesica/pipelines/StageFailure.h"
 #include "vesica/pipelines/StageManifest.h"
 #include "vesica/pipelines/StateFolder.h"
@@ -152,6 +153,7 @@ class Execution {
     say("vesica: [" + std::to_string(launched_) + "/" + std::to_string(total_) + "] " + s.id +
         ": " + o.reason);
     try {
+      const bool was_interrupted = interrupted_before(s);
       const Backup backup = back_up_outputs(plan_, i);
       if (!backup.files.empty()) {
         o.backed_up = backup.files;
@@ -168,11 +170,35 @@ class Execution {
       write_stage_failure(plan_, s.id, running);
       std::error_code ec;
       fs::remove(plan_.in_workdir(s.manifest), ec);
-      running_.push_back(
-          {i, std::make_unique<ChildProcess>(s.executable, s.argv, plan_.workdir), Clock::now()});
+      running_.push_back({i,
+                          std::make_unique<ChildProcess>(
+                              s.executable, arguments(s, was_interrupted), plan_.workdir),
+                          Clock::now()});
     } catch (const Error& e) {
       finish(i, 127, 0.0, {e.what()});
     }
+  }
+
+  // Whether the stage's last run was interrupted (by a signal, or its runner killed).
+  bool interrupted_before(const PlannedStage& s) const {
+    const auto failure = read_stage_failure(plan_, s.id);
+    return failure &&
+           (failure->state == StageFailure::State::Interrupted ||
+            (failure->state == StageFailure::State::Running && !failure->runner_alive()));
+  }
+
+  // The stage's arguments: with --resume for an interrupted stage that can continue from
+  // a valid checkpoint of its present inputs and arguments.
+  std::vector<std::string> arguments(const PlannedStage& s, bool was_interrupted) {
+    std::vector<std::string> argv = s.argv;
+    if (!was_interrupted) return argv;
+    if (const auto c = resumable_checkpoint(plan_, s)) {
+      char t[32];
+      std::snprintf(t, sizeof t, "%.6g", c->time_s);
+      say("vesica: resuming " + s.id + " from its checkpoint at t = " + t + " s");
+      argv.push_back("--resume");
+    }
+    return argv;
   }
 
   void wait_for_output(SignalRelay& relay) {

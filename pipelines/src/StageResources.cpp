@@ -262,7 +262,9 @@ double level2_seconds(const PlannedStage& s, double tetrahedra, double fill_s, d
   // fluid_dt_s 0 asks for adaptive filling steps: about 11 s of simulated time a step.
   const double given_fill_dt = number(s, "fluid_dt_s");
   const double fill_dt = given_fill_dt > 0.0 ? given_fill_dt : 11.0;
-  const double void_dt = number(s, "void_dt_s");
+  // void_dt_s 0 asks for adaptive voiding steps: about half a second a step.
+  const double given_void_dt = number(s, "void_dt_s");
+  const double void_dt = given_void_dt > 0.0 ? given_void_dt : 0.5;
   return 10.0 + scale * (6.0 * fill_s / fill_dt + 3.7 * void_s / void_dt);
 }
 

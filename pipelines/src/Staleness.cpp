@@ -4,6 +4,7 @@
 #include <map>
 
 #include "Joined.h"
+#include "vesica/pipelines/StageCheckpoint.h"
 #include "vesica/pipelines/StageFailure.h"
 #include "vesica/pipelines/StageManifest.h"
 #include "vesica/pipelines/StateFolder.h"
@@ -101,6 +102,17 @@ StageStatus edited_status(const PlannedStage& s, const std::vector<std::string>&
   return st;
 }
 
+// An interrupted stage that left a checkpoint it can resume from says so; else the
+// failure record's description.
+std::string failure_reason(const Plan& plan, const PlannedStage& s, const StageFailure& failure) {
+  const bool interrupted =
+      failure.state == StageFailure::State::Interrupted ||
+      (failure.state == StageFailure::State::Running && !failure.runner_alive());
+  if (interrupted)
+    if (const auto c = resumable_checkpoint(plan, s)) return checkpoint_status(*c);
+  return failure.describe();
+}
+
 // No manifest: never run, or its last run did not finish. After a failure the runner
 // recorded the outputs as the stage left them, so a file saved there since (a label map
 // painted by hand after the segmentation failed) is an edit like any other. A run that was
@@ -109,16 +121,17 @@ StageStatus without_manifest(const Plan& plan, const PlannedStage& s) {
   const auto failure = read_stage_failure(plan, s.id);
   if (!failure) return {Freshness::Missing, "not run yet (no manifest " + s.manifest + ")", {}};
   if (failure->state == StageFailure::State::Running)
-    return {
-        failure->runner_alive() ? Freshness::Running : Freshness::Failed, failure->describe(), {}};
+    return {failure->runner_alive() ? Freshness::Running : Freshness::Failed,
+            failure_reason(plan, s, *failure),
+            {}};
   std::vector<std::string> edited;
   std::string other;
   compare_outputs(plan, failure->outputs_before, fs::file_time_type::min(), edited, other);
   std::error_code ec;
   if (!recorded(failure->outputs_before, s.output) && fs::exists(plan.in_workdir(s.output), ec))
     edited.push_back(s.output);
-  if (!edited.empty()) return edited_status(s, edited, failure->describe());
-  return {Freshness::Failed, failure->describe(), {}};
+  if (!edited.empty()) return edited_status(s, edited, failure_reason(plan, s, *failure));
+  return {Freshness::Failed, failure_reason(plan, s, *failure), {}};
 }
 
 }  // namespace

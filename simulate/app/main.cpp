@@ -8,6 +8,7 @@
 
 #include "VerificationStage.h"
 #include "vesica/core/AtomicOutput.h"
+#include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/ParameterCli.h"
@@ -16,6 +17,7 @@
 #include "vesica/core/StageRecord.h"
 #include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/CheckpointFile.h"
 #include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/MaterialRegistry.h"
 #include "vesica/simulate/MeshReader.h"
@@ -67,6 +69,21 @@ MaterialSpec material_spec(const SimulateSettings& c) {
   return spec;
 }
 
+// What a checkpoint of this run is computed from (docs/simulate.md, "Checkpoint and
+// resume"): the mesh's content, the parameters (those that change results: not the
+// checkpoint interval) and the command line without --resume, which the runner compares.
+std::string checkpoint_identity(const std::string& mesh, nlohmann::json parameters, int argc,
+                                char** argv) {
+  parameters.erase("checkpoint_minutes");
+  nlohmann::json arguments = nlohmann::json::array();
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) != "--resume") arguments.push_back(argv[i]);
+  return nlohmann::json{{"inputs", {{{"path", mesh}, {"hash", content_hash(mesh)}}}},
+                        {"parameters", parameters},
+                        {"arguments", arguments}}
+      .dump();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,11 +93,14 @@ int main(int argc, char** argv) {
   SimulateSettings c;
   ParameterTable table = parameter_table(c);
   std::string mesh, output;
+  bool resume = false;
   app.add_option("mesh", mesh, ".vtu from vesica-mesh (or its .msh), or a surface .vtp/.stl (mm)")
       ->required();
   app.add_option("-o,--output", output, "output folder: history.csv, series.pvd, summary.json")
       ->required();
   add_parameter_options(app, table);
+  app.add_flag("--resume", resume,
+               "continue an interrupted run from its checkpoint (docs/simulate.md)");
   add_common_options(app, common);
 
   return run_stage_main(app, argc, argv, common, [&]() {
@@ -109,31 +129,40 @@ int main(int argc, char** argv) {
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
+    options.checkpoints.file = checkpoint_path_for_manifest(default_manifest_path(common, output));
+    options.checkpoints.identity = checkpoint_identity(mesh, record.parameters(), argc, argv);
+    options.checkpoints.resume = resume;
     // The output folder is written whole under a temporary name and replaces the earlier
     // one only when the run completed; a failed run's partial results are kept only where
     // they replace nothing.
     const fs::path out(output);
     const bool had_earlier = fs::exists(out);
     CystometryResult result;
-    write_atomically(out, [&](const fs::path& tmp) {
-      options.output_dir = tmp;
-      if (options.level == 2) {
-        fluid::FluidMesh urine;
-        {
-          PhaseTimer timer(record, "read");
-          urine = read_urine(mesh);
+    try {
+      write_atomically(out, [&](const fs::path& tmp) {
+        options.output_dir = tmp;
+        if (options.level == 2) {
+          fluid::FluidMesh urine;
+          {
+            PhaseTimer timer(record, "read");
+            urine = read_urine(mesh);
+          }
+          PhaseTimer timer(record, "simulate");
+          result = run_cystometry(wall, spec, p, options, &urine);
+        } else {
+          PhaseTimer timer(record, "simulate");
+          result = run_cystometry(wall, spec, p, options);
         }
-        PhaseTimer timer(record, "simulate");
-        result = run_cystometry(wall, spec, p, options, &urine);
-      } else {
-        PhaseTimer timer(record, "simulate");
-        result = run_cystometry(wall, spec, p, options);
-      }
-      record.summary() = result.summary;
-      record.write(tmp / "summary.json", "");
-      if (!result.completed && had_earlier)
-        fail(mesh, result.failure, "the earlier results in " + output + " are kept");
-    });
+        record.summary() = result.summary;
+        record.write(tmp / "summary.json", "");
+        if (!result.completed && had_earlier)
+          fail(mesh, result.failure, "the earlier results in " + output + " are kept");
+      });
+    } catch (const RunInterrupted& e) {  // the earlier output is intact
+      std::fprintf(stderr, "%s\n",
+                   single_line("vesica-simulate: " + std::string(e.what())).c_str());
+      return 128 + e.signal;
+    }
     record.add_output(out / "history.csv");
     if (options.write_series) record.add_output(out / "series.pvd");
     if (options.write_series && options.level == 2) record.add_output(out / "fluid.pvd");
@@ -143,6 +172,8 @@ int main(int argc, char** argv) {
       fail(mesh, result.failure, "results up to that point are in " + output);
     }
     record.write("", default_manifest_path(common, output));  // .vesica/<folder>.manifest.json
+    std::error_code ec;                                       // a finished run needs no checkpoint
+    fs::remove_all(options.checkpoints.file.parent_path(), ec);
     if (!common.report.empty()) record.write(common.report, "");
     if (common.json) std::cout << record.summary().dump(2) << std::endl;
     return 0;

@@ -22,6 +22,14 @@ InertiaTerm BossakNewmark::inertia(const std::vector<Eigen::Vector3d>& x_n, doub
   return term;
 }
 
+void BossakNewmark::restore(const std::vector<Eigen::Vector3d>& v,
+                            const std::vector<Eigen::Vector3d>& a) {
+  if (v.size() != v_.size() || a.size() != a_.size())
+    throw std::invalid_argument("Bossak-Newmark: another wall's state");
+  v_ = v;
+  a_ = a;
+}
+
 void BossakNewmark::commit(const std::vector<Eigen::Vector3d>& x_n,
                            const std::vector<Eigen::Vector3d>& x_new, double dt) {
   if (!(dt > 0.0)) return;

@@ -40,6 +40,9 @@ class BossakNewmark {
 
   const std::vector<Eigen::Vector3d>& velocity() const { return v_; }      // m/s
   const std::vector<Eigen::Vector3d>& acceleration() const { return a_; }  // m/s²
+  // Continues from a saved state (checkpoints); throws std::invalid_argument for another
+  // node count.
+  void restore(const std::vector<Eigen::Vector3d>& v, const std::vector<Eigen::Vector3d>& a);
 
  private:
   double alpha_b_;

@@ -28,6 +28,9 @@
 
 namespace vesica::simulate {
 
+class CheckpointWriter;
+class CheckpointReader;
+
 // The protocol's time-dependent loads at one instant.
 struct ProtocolLoads {
   double pabd_pa = 0.0;     // abdominal pressure at the reference height, straining included
@@ -62,6 +65,15 @@ struct StepRules {
   double fixed_fill_step_s = 0.0;
   // Voiding steps: 0 = adaptive (CystometryProtocol::next_void_step), else this fixed step.
   double fixed_void_step_s = 0.0;
+  // Bounds of an adaptive voiding step (s); 0: the first step's size and
+  // RunOptions::max_void_step_s.
+  double min_void_step_s = 0.0, max_void_step_s = 0.0;
+  // Adaptive voiding steps also follow the outflow's change and the Newton iterations, and
+  // restart at the shortest step when the urethra opens (CystometryProtocol::next_void_step).
+  bool void_step_follows_flow = false;
+  // Volume an adaptive voiding step aims to drain (ml): of a taut wall at most, and of a
+  // slack one; 0: RunOptions::max_void_step_ml and the protocol's own slack aim.
+  double void_step_ml = 0.0, slack_void_step_ml = 0.0;
   double void_frame_interval_s = 1.0;  // frames while voiding (s)
 };
 
@@ -106,6 +118,13 @@ class CavityModel {
   virtual void finish_frames() {}
   virtual std::vector<std::string> take_notes() { return {}; }
   virtual std::string progress_label() const { return ""; }
+
+  // Checkpoints (docs/simulate.md, "Checkpoint and resume"): whether the model can save
+  // its state between two steps so exactly that the run continues bit for bit, and the
+  // save and restore (on a model built from the same wall, material and settings).
+  virtual bool saves_state() const { return false; }
+  virtual void save_state(CheckpointWriter& /*out*/) const {}
+  virtual void restore_state(CheckpointReader& /*in*/) {}
 };
 
 }  // namespace vesica::simulate

@@ -64,8 +64,10 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
           "activation times and straining_kpa must be >= 0");
   if (o.level < 0 || o.level > 2) usage_error("level must be 0, 1 or 2");
   if (o.level == 2) {
-    if (!(o.level2.fill_dt_s >= 0.0 && o.level2.void_dt_s > 0.0))
-      usage_error("level 2 time steps must be > 0 (the filling's 0: adaptive)");
+    if (!(o.level2.fill_dt_s >= 0.0 && o.level2.void_dt_s >= 0.0))
+      usage_error("level 2 time steps must be > 0 (0: adaptive)");
+    if (!(o.level2.void_dt_min_s > 0.0 && o.level2.void_dt_min_s <= o.level2.void_dt_max_s))
+      usage_error("level 2 voiding steps need 0 < void_dt_min_s <= void_dt_max_s");
     if (o.dynamic || o.reference != ReferenceState::Scale)
       usage_error("level 2 supports the scaled reference (--reference scale) without --dynamic");
   }

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "Checkpoint.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/CystometrySummary.h"
@@ -19,7 +20,12 @@ namespace {
 // step is hard whatever its size, and small steps fail least.
 constexpr double kSlackVoidStepMl = 1.0;
 constexpr double kFirstVoidStepS = 0.1;  // the first adaptive voiding step
-constexpr double kHoldStepS = 10.0;      // the longest adaptive hold step
+constexpr double kOpeningStepS = 0.01;   // the first adaptive step with the urethra open
+// An adaptive voiding step changes the outflow by at most this fraction of the flow (or of
+// the stop flow, when larger): the flow rises fast at the urethra's opening and falls at
+// its closing, and is nearly steady on the plateau and in the tail.
+constexpr double kFlowChangePerStep = 0.2;
+constexpr double kHoldStepS = 10.0;  // the longest adaptive hold step
 // An adaptive filling step grows by kFillGrowth after one that took at most
 // kEasyIterations Newton iterations.
 constexpr int kEasyIterations = 6;
@@ -95,14 +101,19 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
     last = now;
     return s;
   };
+  if (!options_.checkpoints.file.empty() && model.saves_state())
+    checkpointer_ = std::make_unique<Checkpointer>(options_.checkpoints);
   try {
-    settle();
-    phase_seconds_["settle"] = lap();
-    fill();
-    if (settings_.hold_s > 0.0) hold();
-    phase_seconds_["filling"] = lap();
+    if (!resume_if_asked()) {
+      settle();
+      phase_seconds_["settle"] = lap();
+    }
+    if (phase_ <= Phase::Filling) fill();
+    if (settings_.hold_s > 0.0 && phase_ <= Phase::Hold) hold();
+    phase_seconds_["filling"] += lap();
     capacity_index_ = result_.history.size() - 1;
     filled_ = true;
+    phase_ = Phase::Voiding;
     if (settings_.void_after_fill && !options_.filling_only) void_bladder();
     phase_seconds_["voiding"] = lap();
     result_.completed = true;
@@ -198,6 +209,8 @@ void CystometryProtocol::fill() {
   const double target = units::m3_from_ml(settings_.capacity_ml - settings_.start_ml);
   const double dt_max = units::m3_from_ml(options_.max_fill_step_ml) / q_in;
   double dt = rules_.fixed_fill_step_s > 0.0 ? rules_.fixed_fill_step_s : dt_max / 2;
+  if (std::exchange(resuming_, false)) dt = step_s_;
+  phase_ = Phase::Filling;
   while (infused_ < target * (1.0 - 1e-12)) {
     if (rules_.fixed_fill_step_s > 0.0) dt = rules_.fixed_fill_step_s;
     dt = std::min(dt, (target - infused_) / q_in);
@@ -207,17 +220,26 @@ void CystometryProtocol::fill() {
     // only that this point was hard).
     if (rules_.fixed_fill_step_s <= 0.0 && iterations <= kEasyIterations)
       dt = std::min(kFillGrowth * dt, dt_max);
+    step_s_ = dt;
+    checkpoint_if_due();
   }
 }
 
 void CystometryProtocol::hold() {
-  const double t_end = time_ + settings_.hold_s;
-  double dt = rules_.fixed_fill_step_s > 0.0 ? rules_.fixed_fill_step_s
+  if (!std::exchange(resuming_, false)) {
+    hold_end_s_ = time_ + settings_.hold_s;
+    step_s_ = rules_.fixed_fill_step_s > 0.0 ? rules_.fixed_fill_step_s
                                              : std::min(settings_.hold_s, kHoldStepS);
+  }
+  phase_ = Phase::Hold;
+  const double t_end = hold_end_s_;
+  double dt = step_s_;
   while (time_ < t_end - 1e-9) {
     dt = std::min(dt, t_end - time_);
     advance(dt, 0.0, false);
     record();
+    step_s_ = dt;
+    checkpoint_if_due();
   }
 }
 
@@ -244,13 +266,19 @@ void CystometryProtocol::void_bladder() {
     if (!urethra_open_ && model_->pves() >= urethra_.opening_pressure()) {
       urethra_open_ = true;
       model_->urethra_opens(urethra_);
+      // The flow starts from zero: a step grown through the isovolumetric contraction
+      // would jump over its rise (and the pressure could fall below p_close in one step).
+      if (adaptive && rules_.void_step_follows_flow)
+        dt = std::max(rules_.min_void_step_s, kOpeningStepS);
     }
     const double V_before = model_->volume(), t_before = time_, p_before = model_->pves();
+    const double Q_before = model_->outflow();
     if (!adaptive) dt = rules_.fixed_void_step_s;
     if (model_->outflow() > 0.0) dt = std::min(dt, 0.5 * (V_before - V_floor) / model_->outflow());
     const double dt_asked = dt;
+    int iterations = 0;
     try {
-      advance(dt, 0.0, urethra_open_);
+      iterations = advance(dt, 0.0, urethra_open_).iterations;
     } catch (const StepFailed& e) {
       const std::string note = model_->voiding_end_note(e.what());
       if (note.empty()) throw;
@@ -259,6 +287,7 @@ void CystometryProtocol::void_bladder() {
       break;
     }
     record();
+    if (checkpointer_) checkpointer_->stop_if_signalled();  // no checkpoints while voiding
     peak_pves_ = std::max(peak_pves_, model_->pves());
     const double Q = model_->outflow();
     if (urethra_open_) {
@@ -274,7 +303,8 @@ void CystometryProtocol::void_bladder() {
     // again on the crumpling wall, every other step).
     const double dt_taken = time_ - t_before;
     max_growth_ = dt_taken < dt_asked * (1.0 - 1e-9) ? 1.0 : std::min(2.0, 1.25 * max_growth_);
-    dt = next_void_step(dt_taken, std::abs(V_before - model_->volume()));
+    dt = next_void_step(dt_taken, std::abs(V_before - model_->volume()),
+                        std::abs(Q - Q_before) / std::max({Q, Q_before, stop}), iterations);
   }
   if (!urethra_open_) {
     std::ostringstream note;
@@ -301,14 +331,27 @@ bool CystometryProtocol::contraction_spent(double p_before) const {
 // wall drains smoothly (2 Newton iterations a step with the model's predictor), so the aim
 // is a quarter of the volume left above the stress-free reference, up to max_void_step_ml;
 // near and below the reference the wall goes slack and wrinkles, every step is hard
-// whatever its size, and small steps fail least.
-double CystometryProtocol::next_void_step(double dt, double dV) const {
-  const double slack_aim = units::m3_from_ml(kSlackVoidStepMl);
+// whatever its size, and small steps fail least. When the model asks (level 2,
+// StepRules::void_step_follows_flow) the step also keeps the flow's relative change per
+// step (flow_change, of the step just taken) near kFlowChangePerStep (backward Euler's
+// error follows the change of the solution per step), and does not grow after a step whose
+// Newton needed more than kEasyIterations. Within the model's bounds.
+double CystometryProtocol::next_void_step(double dt, double dV, double flow_change,
+                                          int iterations) const {
+  const double slack_aim = units::m3_from_ml(
+      rules_.slack_void_step_ml > 0.0 ? rules_.slack_void_step_ml : kSlackVoidStepMl);
+  const double taut_aim = units::m3_from_ml(rules_.void_step_ml > 0.0 ? rules_.void_step_ml
+                                                                      : options_.max_void_step_ml);
   const double aim = std::clamp((model_->volume() - model_->reference_volume()) / 4.0, slack_aim,
-                                std::max(slack_aim, units::m3_from_ml(options_.max_void_step_ml)));
-  const double next =
-      dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, max_growth_ * dt) : max_growth_ * dt;
-  return std::min(next, options_.max_void_step_s);
+                                std::max(slack_aim, taut_aim));
+  const bool by_flow = rules_.void_step_follows_flow;
+  const double growth = by_flow && iterations > kEasyIterations ? 1.0 : max_growth_;
+  double next = dV > 0.0 ? std::clamp(dt * aim / dV, 0.5 * dt, growth * dt) : growth * dt;
+  if (by_flow && flow_change > 0.0)
+    next = std::min(next, std::clamp(dt * kFlowChangePerStep / flow_change, 0.5 * dt, growth * dt));
+  const double longest =
+      rules_.max_void_step_s > 0.0 ? rules_.max_void_step_s : options_.max_void_step_s;
+  return std::clamp(next, std::min(rules_.min_void_step_s, longest), longest);
 }
 
 void CystometryProtocol::record() {

@@ -21,6 +21,9 @@
 namespace vesica::simulate {
 
 class VtuSeriesWriter;
+class Checkpointer;
+class CheckpointWriter;
+class CheckpointReader;
 
 class CystometryProtocol {
  public:
@@ -32,6 +35,11 @@ class CystometryProtocol {
   // (history.csv is the caller's). A step that fails after cut-backs ends the run with
   // completed = false and the history so far.
   CystometryResult run(CavityModel& model);
+
+  // Checkpoints (docs/simulate.md, "Checkpoint and resume"; CystometryProtocolState.cpp):
+  // the protocol's state between two steps, the model's after it.
+  void save_state(CheckpointWriter& out) const;
+  void restore_state(CheckpointReader& in);
 
  private:
   struct StepFailed : std::runtime_error {
@@ -47,14 +55,20 @@ class CystometryProtocol {
   // One timed step of at most dt with inflow q_in (m³/s), the urethra open or closed,
   // halving dt on failure; throws StepFailed after the model's cut-backs.
   StepResult advance(double dt, double q_in, bool outlet);
-  // The next adaptive voiding step from the one just taken (dt, draining dV).
-  double next_void_step(double dt, double dV) const;
+  // The next adaptive voiding step from the one just taken (dt, draining dV, changing the
+  // outflow by flow_change of itself, in Newton iterations).
+  double next_void_step(double dt, double dV, double flow_change, int iterations) const;
   bool contraction_spent(double p_before) const;
   ProtocolLoads loads_at(double t) const;
   void record();
   void frame(bool force);
   void take_notes();
   void summarize(double seconds);
+  // Resumes from RunOptions::checkpoints when asked: true when the state was restored.
+  bool resume_if_asked();
+  // After a filling or holding step's row: writes a checkpoint when one is due, and stops
+  // the run (RunInterrupted) when a signal asked for it.
+  void checkpoint_if_due();
 
   const ProtocolSettings& settings_;
   const RunOptions& options_;
@@ -75,6 +89,13 @@ class CystometryProtocol {
   bool urethra_open_ = false;
   double peak_pves_ = 0.0;                       // the highest Pves while voiding (Pa)
   std::map<std::string, double> phase_seconds_;  // wall-clock time of settle, filling, voiding
+  // Where the run stands, for checkpoints: the phase, whether its loop continues from a
+  // restored state, its present step (s) and the end of the hold (s).
+  enum class Phase { Settle, Filling, Hold, Voiding };
+  Phase phase_ = Phase::Settle;
+  bool resuming_ = false;
+  double step_s_ = 0.0, hold_end_s_ = 0.0;
+  std::unique_ptr<Checkpointer> checkpointer_;  // null: no checkpoints
 };
 
 }  // namespace vesica::simulate

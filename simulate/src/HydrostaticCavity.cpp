@@ -37,6 +37,7 @@ HydrostaticCavity::HydrostaticCavity(const WallModel& wall, const Material& mate
     dynamics_ = std::make_unique<BossakNewmark>(wall.node_count(), options.bossak_alpha);
   volume_ = V_reference_ = enclosed_volume(wall, x_);
   reference_rate_m3_s_ = units::m3s_from_ml_per_min(settings.fill_rate_ml_min);
+  if (!options.checkpoints.file.empty()) solver_.keep_factorized_matrix();
 }
 
 void HydrostaticCavity::set_loads(const ProtocolLoads& loads) {

@@ -56,6 +56,12 @@ class HydrostaticCavity final : public CavityModel {
   std::vector<MembraneStressOutput> wall_stresses() const override;
   nlohmann::json statistics() const override { return statistics_.json(); }
 
+  // Checkpoints (HydrostaticCavityState.cpp): the wall, its history and dynamics, the
+  // pressure and bookkeeping, and what the solver carries to the next step.
+  bool saves_state() const override { return true; }
+  void save_state(CheckpointWriter& out) const override;
+  void restore_state(CheckpointReader& in) override;
+
  private:
   // One Newton solve to the step's end; restores the state when it does not converge.
   bool attempt(double dt, const ProtocolLoads& loads, const UrethraLaw* urethra,

@@ -136,7 +136,18 @@ bool LinearSolver::factorize_lu(const Eigen::SparseMatrix<double>& K) {
   return factorized_;
 }
 
+void LinearSolver::restore(const Memory& memory) {
+  if (memory.matrix.nonZeros() > 0) {
+    try_cholesky_ = memory.try_cholesky_before;
+    factorize(memory.matrix);
+  }
+  try_cholesky_before_ = memory.try_cholesky_before;
+  try_cholesky_ = memory.try_cholesky;
+}
+
 bool LinearSolver::factorize(const Eigen::SparseMatrix<double>& K) {
+  try_cholesky_before_ = try_cholesky_;
+  if (keep_last_matrix_) last_matrix_ = K;
   factorized_ = false;
   method_ = Method::None;
   Backends& b = *backends_;

@@ -51,6 +51,18 @@ class LinearSolver {
   // past their limit point.
   int negative_eigenvalues() const;
 
+  // What a solver carries to the next factorization and solve (checkpoints): the last
+  // factorized K (kept only when asked: keep_last_matrix) and the Cholesky-first rule
+  // before and after that factorization. restore() factorizes that K again, so that a
+  // solver restored from it solves bit for bit as the one saved would.
+  struct Memory {
+    Eigen::SparseMatrix<double> matrix;  // empty: none factorized, or not kept
+    bool try_cholesky_before = true, try_cholesky = true;
+  };
+  void keep_last_matrix(bool on) { keep_last_matrix_ = on; }
+  Memory memory() const { return {last_matrix_, try_cholesky_before_, try_cholesky_}; }
+  void restore(const Memory& memory);
+
  private:
   bool is_symmetric(const Eigen::SparseMatrix<double>& K);
   bool factorize_lu(const Eigen::SparseMatrix<double>& K);
@@ -65,6 +77,9 @@ class LinearSolver {
   // and again once the LDLᵀ finds no negative pivot (a failed Cholesky costs up to a
   // whole factorization, so it is not retried while K is known to be indefinite).
   bool try_cholesky_ = true;
+  bool try_cholesky_before_ = true;  // of the last factorization
+  bool keep_last_matrix_ = false;
+  Eigen::SparseMatrix<double> last_matrix_;
 };
 
 }  // namespace vesica::simulate

@@ -243,6 +243,14 @@ void MembraneProblem::copy_committed_state(const MembraneProblem& other) {
   J2_old_ = J2_new_ = other.J2_old_;
 }
 
+void MembraneProblem::restore_committed_state(const std::vector<double>& history,
+                                              const std::vector<double>& J2) {
+  if (history.size() != history_old_.size() || J2.size() != J2_old_.size())
+    throw std::invalid_argument("MembraneProblem: another wall's state");
+  history_old_ = history_new_ = history;
+  J2_old_ = J2_new_ = J2;
+}
+
 void MembraneProblem::apply_increment(const Eigen::VectorXd& du,
                                       std::vector<Eigen::Vector3d>& x) const {
   for (std::size_t n = 0; n < x.size(); ++n)

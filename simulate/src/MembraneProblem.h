@@ -72,6 +72,12 @@ class MembraneProblem {
   // Takes over the committed state (history, thickness guesses) of another problem on the
   // same wall and material: a model that continues where another one stopped.
   void copy_committed_state(const MembraneProblem& other);
+  // The committed state as numbers, for checkpoints: the material history of every element,
+  // then its squared volume ratio. restore_committed_state throws std::invalid_argument
+  // for another wall's or material's state.
+  const std::vector<double>& committed_history() const { return history_old_; }
+  const std::vector<double>& committed_volume_ratios() const { return J2_old_; }
+  void restore_committed_state(const std::vector<double>& history, const std::vector<double>& J2);
 
   // x += du on the free dofs.
   void apply_increment(const Eigen::VectorXd& du, std::vector<Eigen::Vector3d>& x) const;

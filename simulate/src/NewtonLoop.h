@@ -91,6 +91,13 @@ class NewtonLoop {
   // Forgets what the loop carries from one solve to the next (the foundation's η, whether
   // the system's last factorization may be reused), as for a new system or a new time step.
   void reset();
+  // What the loop carries from one solve to the next (checkpoints).
+  struct Carried {
+    double eta = 0.0;
+    bool tangent_reusable = false;
+  };
+  Carried carried() const { return {eta_, tangent_reusable_}; }
+  void restore(const Carried& c) { eta_ = c.eta, tangent_reusable_ = c.tangent_reusable; }
 
   const NewtonOptions& options() const { return options_; }
 

@@ -188,6 +188,22 @@ NewtonSolver::NewtonSolver(MembraneProblem& problem, NewtonOptions options)
 
 NewtonSolver::~NewtonSolver() = default;
 
+void NewtonSolver::keep_factorized_matrix() {
+  lu_->keep_last_matrix(true);
+}
+
+NewtonSolver::Carried NewtonSolver::carried() const {
+  return {loop_.carried(), lu_->memory()};
+}
+
+void NewtonSolver::restore(const Carried& carried) {
+  loop_.restore(carried.loop);
+  // The factorization matters only where the next solve may reuse it.
+  LinearSolver::Memory lu = carried.lu;
+  if (!carried.loop.tangent_reusable) lu.matrix = {};
+  lu_->restore(lu);
+}
+
 NewtonReport NewtonSolver::solve(const CavityEquation& cavity, WallLoads& loads,
                                  std::vector<Eigen::Vector3d>& x) {
   System system(*this, loop_.options(), cavity, loads, x);

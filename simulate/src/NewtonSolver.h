@@ -21,6 +21,7 @@
 
 #include <Eigen/Dense>
 
+#include "LinearSolver.h"
 #include "MembraneProblem.h"
 #include "NewtonLoop.h"
 #include "vesica/simulate/NewtonOptions.h"
@@ -50,6 +51,17 @@ class NewtonSolver {
 
   // The state of the last converged solve (volume, reactions at the fixed dofs).
   const WallAssembly& assembly() const { return assembly_; }
+
+  // What carries over from one solve to the next, for checkpoints (HydrostaticCavityState.cpp):
+  // the loop's foundation and tangent reuse, and the last factorization's matrix (kept
+  // from keep_factorized_matrix() on).
+  void keep_factorized_matrix();
+  struct Carried {
+    NewtonLoop::Carried loop;
+    LinearSolver::Memory lu;
+  };
+  Carried carried() const;
+  void restore(const Carried& carried);
 
  private:
   class System;

@@ -171,8 +171,14 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
            NumberRange::at_least(1e-3).at_most(60).or_value(
                0, "adaptive: growing after easy steps up to max_fill_step_ml"),
            "level 2: time step while filling");
-  t.number("void_dt_s", r.level2.void_dt_s, "s", NumberRange::at_least(1e-3).at_most(1),
+  t.number("void_dt_s", r.level2.void_dt_s, "s",
+           NumberRange::at_least(1e-3).at_most(1).or_value(
+               0, "adaptive: from the flow's and volume's change and the Newton iterations"),
            "level 2: time step while voiding");
+  t.number("void_dt_min_s", r.level2.void_dt_min_s, "s", NumberRange::at_least(1e-4).at_most(1),
+           "level 2: shortest adaptive voiding step (at the urethra's opening)");
+  t.number("void_dt_max_s", r.level2.void_dt_max_s, "s", NumberRange::at_least(1e-4).at_most(10),
+           "level 2: longest adaptive voiding step (plateau and tail of the flow)");
   t.number("urine_viscosity_pa_s", r.level2.urine_viscosity, "Pa*s",
            NumberRange::at_least(1e-4).at_most(1), "level 2: urine viscosity");
   t.choice<Level2LinearSolver>(
@@ -180,6 +186,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
       {{"krylov", Level2LinearSolver::Krylov}, {"direct", Level2LinearSolver::Direct}},
       "level 2: krylov (GMRES on a reused LU) or direct (an LU every Newton iteration)");
   t.flag_off("no_series", r.write_series, "do not write the .pvd/.vtu series");
+  t.number("checkpoint_minutes", r.checkpoints.interval_min, "min",
+           NumberRange::greater_than(0).at_most(1440),
+           "compute time between two checkpoints of a level-1 or level-2 run, which --resume "
+           "continues from (docs/simulate.md)");
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // Helpers for the runner tests: write a pipeline file, run the real `vesica` binary and
 // read back its exit code, stdout and stderr.
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -78,5 +80,25 @@ inline std::map<std::string, std::pair<std::string, std::string>> status_of(
 }
 
 using Ids = std::vector<std::string>;
+
+// Starts `vesica run FILE` in the background, its stderr to `err`; returns its PID.
+inline pid_t start_run(const std::filesystem::path& file, const std::filesystem::path& err) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const std::string vesica = (bin_dir() / "vesica").string();
+    std::freopen(err.c_str(), "w", stderr);
+    std::freopen("/dev/null", "w", stdout);
+    ::execl(vesica.c_str(), vesica.c_str(), "run", file.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Its exit status, 128 + signal when a signal ended it.
+inline int wait_exit(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
 
 }  // namespace vesica::test

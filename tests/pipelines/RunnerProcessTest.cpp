@@ -29,25 +29,6 @@ fs::path two_stages(const fs::path& dir, const std::string& b_params) {
   return dir / "p.yaml";
 }
 
-// Starts `vesica run FILE` in the background, its stderr to `err`; returns its PID.
-pid_t start_run(const fs::path& file, const fs::path& err) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const std::string vesica = (bin_dir() / "vesica").string();
-    std::freopen(err.c_str(), "w", stderr);
-    std::freopen("/dev/null", "w", stdout);
-    ::execl(vesica.c_str(), vesica.c_str(), "run", file.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  return pid;
-}
-
-int wait_exit(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 // Whether a process whose command line contains `text` is running. "[x]yz" matches "xyz"
 // but not the shell running pgrep, whose command line holds "[x]yz".
 bool process_running(const std::string& text, const fs::path& scratch) {

@@ -3,6 +3,7 @@
 // Poiseuille flow Q = π R⁴ Δp / (8 μ L). Meshes come from gmsh's OCC kernel. SI units.
 #include <gmsh.h>
 #include <gtest/gtest.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -16,6 +17,7 @@
 
 #include "TestData.h"
 #include "fluid/BoundaryFaces.h"
+#include "fluid/FlowStructures.h"
 #include "fluid/FluidNewton.h"
 #include "fluid/FluidProblem.h"
 #include "fluid/InflowPatch.h"
@@ -229,6 +231,37 @@ TEST(NavierStokes, SeriesOpensInVtkWithFieldsInOutputUnits) {
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
     if (grid->GetPoint(i)[2] < 1e-9) bottom_cmh2o = pressure->GetTuple1(i);
   EXPECT_NEAR(bottom_cmh2o, 1000.0 * 9.81 * 0.06 / 98.0665, 1e-6);
+  // The urine at rest: no vorticity in any tetrahedron.
+  vtkDataArray* vorticity = grid->GetCellData()->GetArray("vorticity_1_s");
+  ASSERT_NE(vorticity, nullptr);
+  EXPECT_EQ(vorticity->GetNumberOfComponents(), 3);
+  EXPECT_EQ(vorticity->GetNumberOfTuples(), grid->GetNumberOfCells());
+  EXPECT_NE(grid->GetCellData()->GetArray("q_criterion_1_s2"), nullptr);
+}
+
+TEST(NavierStokes, VorticityOfASolidBodyRotationIsTwiceItsAngularVelocity) {
+  // u = Ω × x is linear, so P1 carries it exactly: in every tetrahedron ∇ × u = 2Ω, the
+  // strain rate is zero and Q = ½‖W‖² = |Ω|² (analytic, whatever the tetrahedra).
+  const FluidMesh mesh = box_mesh(40, 30, 60, 4);
+  const Eigen::Vector3d omega(0.3, -1.2, 2.5);  // rad/s
+  Eigen::VectorXd state = Eigen::VectorXd::Zero(kDofsPerNode * mesh.nodes.size());
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    state.segment<3>(kDofsPerNode * i) = omega.cross(mesh.nodes[i] - Eigen::Vector3d(0.01, 0, 0));
+  const auto measures = tet_vortex_measures(mesh, state);
+  ASSERT_EQ(measures.size(), mesh.tets.size());
+  for (const auto& m : measures) {
+    EXPECT_LT((m.vorticity - 2.0 * omega).norm(), 1e-9 * omega.norm());
+    EXPECT_NEAR(m.q_criterion, omega.squaredNorm(), 1e-9 * omega.squaredNorm());
+  }
+  // A pure strain (u = (a x, −a y, 0)) has no vorticity and Q = −a² < 0.
+  const double a = 0.7;
+  for (std::size_t i = 0; i < mesh.nodes.size(); ++i)
+    state.segment<3>(kDofsPerNode * i) =
+        Eigen::Vector3d(a * mesh.nodes[i].x(), -a * mesh.nodes[i].y(), 0);
+  for (const auto& m : tet_vortex_measures(mesh, state)) {
+    EXPECT_LT(m.vorticity.norm(), 1e-9);
+    EXPECT_NEAR(m.q_criterion, -a * a, 1e-9);
+  }
 }
 
 struct PoiseuilleResult {

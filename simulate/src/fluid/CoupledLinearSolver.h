@@ -58,6 +58,13 @@ class CoupledLinearSolver {
   };
   const Statistics& statistics() const { return statistics_; }
   nlohmann::json json() const;
+  // The rest of what a restarted run needs (checkpoints): whether the next solve
+  // factorizes anew, and the counts so far (set after restore()).
+  bool refactorize_next() const { return refactorize_next_; }
+  void restore_progress(bool refactorize_next, const Statistics& statistics) {
+    refactorize_next_ = refactorize_next;
+    statistics_ = statistics;
+  }
 
  private:
   bool factorize(const Eigen::SparseMatrix<double>& J, std::string& failure);

@@ -663,6 +663,16 @@ void FluidWallCoupling::replace_tetrahedra(FluidMesh fresh) {
   state_old_ = state_;
 }
 
+// The tetrahedra of a restarted run, built where `mesh` says (NavierStokesCavityState.cpp):
+// the mesh motion and the unknowns as when they were built.
+void FluidWallCoupling::adopt_tetrahedra(FluidMesh mesh) {
+  const std::size_t n_wall = wall_.wall().node_count();
+  mesh_ = std::move(mesh);
+  motion_ = std::make_unique<HarmonicMeshMotion>(mesh_, wall_flags(mesh_.nodes.size(), n_wall));
+  unknowns_ = std::make_unique<Unknowns>(mesh_, outlet_boundary(), fluid_);
+  build_unknowns();
+}
+
 void FluidWallCoupling::set_state(const Eigen::VectorXd& state) {
   if (state.size() != state_.size()) throw std::invalid_argument("set_state: wrong size");
   state_ = state_old_ = state;

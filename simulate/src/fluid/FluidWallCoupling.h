@@ -33,6 +33,11 @@
 #include "fluid/FluidModel.h"
 #include "fluid/MeshMotion.h"
 
+namespace vesica::simulate {
+class CheckpointWriter;
+class CheckpointReader;
+}  // namespace vesica::simulate
+
 namespace vesica::simulate::fluid {
 
 // Inflow at a prescribed rate (m³/s) through a patch of wall triangles whose nodes the
@@ -117,6 +122,13 @@ class FluidWallCoupling {
   // ½ ∫ ρ |u|² with the P1 mass lumped (V_e/4 per corner), J.
   double fluid_kinetic_energy() const;
   // What the linear solves cost so far (CoupledLinearSolver.h).
+  // Checkpoints (NavierStokesCavityState.cpp): the committed state between two steps
+  // with the urethra closed (tetrahedra, positions, velocities, urine state, the last
+  // remesh's size, the linear solver's kept factors); restore_state on a coupling of the
+  // same wall, fluid and options. Throws std::logic_error when the outlet is open.
+  void save_state(CheckpointWriter& out) const;
+  void restore_state(CheckpointReader& in);
+
   nlohmann::json linear_solver_statistics() const {
     nlohmann::json s = solver_.json();
     s["assemble_s"] = assemble_s_;
@@ -135,6 +147,7 @@ class FluidWallCoupling {
   WallLoads step_loads(double dt, const WallLoads& loads_in, const Inflow& inflow) const;
   double apply_urine_increment(const Eigen::VectorXd& dz);  // returns max |Δp|
   void replace_tetrahedra(FluidMesh fresh);                 // transfer and projection of the state
+  void adopt_tetrahedra(FluidMesh mesh);  // a restarted run's: its mesh motion and unknowns
   std::vector<bool> given_velocities() const;
   void commit(double dt, const WallLoads& loads, const std::vector<Eigen::Vector3d>& x_wall,
               const Inflow& inflow);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <utility>
 
@@ -10,6 +11,7 @@
 #include "fluid/BoundaryFaces.h"
 #include "fluid/MeshMotion.h"
 #include "fluid/TetQuality.h"
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
@@ -26,6 +28,20 @@ constexpr double kRemeshCountTolerance = 0.1;
 // Cut-backs of a failed step (each halves it), and frames while voiding.
 constexpr int kMaxCutbacks = 5;
 constexpr double kVoidFrameIntervalS = 0.5;
+// Volumes an adaptive voiding step aims to drain, of a taut and of a slack wall (ml): the
+// step also follows the flow's change (StepRules::void_step_follows_flow), which bounds
+// backward Euler's error where the flow changes, so the volume aims are looser than
+// level 1's, whose quasi-static wall has no other limit.
+constexpr double kVoidStepMl = 20.0;
+constexpr double kSlackVoidStepMl = 5.0;
+
+// Fault injection for tests of a resumed run (docs/simulate.md, "Checkpoint and resume"):
+// VESICA_SIMULATE_REMESH_AT_S=t rebuilds the tetrahedra once, at the first step ending at
+// or after t (s), whatever their quality.
+bool remesh_forced(double time_s, int remeshes) {
+  const char* t = std::getenv("VESICA_SIMULATE_REMESH_AT_S");
+  return t && remeshes == 0 && time_s >= std::atof(t);
+}
 
 std::vector<std::array<int, 3>> region_faces(const WallModel& wall, Region region) {
   std::vector<std::array<int, 3>> faces;
@@ -99,6 +115,11 @@ StepRules NavierStokesCavity::rules() const {
   r.max_cutbacks = kMaxCutbacks;
   r.fixed_fill_step_s = options_.level2.fill_dt_s;
   r.fixed_void_step_s = options_.level2.void_dt_s;
+  r.min_void_step_s = options_.level2.void_dt_min_s;
+  r.max_void_step_s = options_.level2.void_dt_max_s;
+  r.void_step_follows_flow = true;
+  r.void_step_ml = kVoidStepMl;
+  r.slack_void_step_ml = kSlackVoidStepMl;
   r.void_frame_interval_s = kVoidFrameIntervalS;
   return r;  // settling: level 1's cut-backs
 }
@@ -202,6 +223,11 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   result.converged = true;
   // Backward Euler: the tetrahedra lost exactly Q(t_{n+1}) dt through the outlet.
   result.voided_m3 = coupling_->outflow() * step.dt_s;
+  if (coupling_->outlet_open()) {
+    jet_.push_back(outlet_jet(outlet_faces_, coupling_->positions(), coupling_->state(),
+                              coupling_->outflow()));
+    jet_.back().time_s = step.end_time_s;
+  }
   check_mesh(step.end_time_s);
   update_max_speed();
   return result;
@@ -263,7 +289,7 @@ void NavierStokesCavity::check_mesh(double time_s) {
   min_quality_ = std::min(min_quality_, q);
   const double threshold =
       built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
-  if (q >= threshold) return;
+  if (q >= threshold && !remesh_forced(time_s, remeshes_)) return;
   remesh(time_s, q);
 }
 
@@ -333,11 +359,17 @@ void NavierStokesCavity::add_frame(double time_s, bool write) {
   const std::vector<Eigen::Vector3d> shear = nodal_wall_shear(now);
   for (std::size_t i = 0; i < wall_.node_count(); ++i)
     max_shear_ = std::max(max_shear_, shear[i].norm());
-  if (write && fluid_series_) fluid_series_->add_step(time_s, now, coupling_->full_state(), &shear);
+  if (write && fluid_series_) {
+    const OutletAxis outlet = outlet_axis(outlet_faces_, now.nodes);
+    fluid_series_->add_step(time_s, now, coupling_->full_state(), &shear, &outlet);
+  }
 }
 
 void NavierStokesCavity::finish_frames() {
   if (fluid_series_) fluid_series_->finish();
+  if (!options_.output_dir.empty() && !jet_.empty())
+    write_text_atomically(options_.output_dir / "jet.csv",
+                          jet_csv(jet_, patch_area(outlet_faces_, coupling_->positions())));
 }
 
 std::vector<std::string> NavierStokesCavity::take_notes() {
@@ -361,6 +393,7 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["max_wall_shear_pa"] = max_shear_;
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
+  s["jet"] = jet_summary(jet_);
   s["level1_from"] = collapse_ ? nlohmann::json{{"time_s", collapse_time_s_},
                                                 {"volume_ml", units::ml_from_m3(collapse_volume_)}}
                                : nlohmann::json(nullptr);

@@ -13,8 +13,10 @@
 // (gmsh) when they degrade. Below the stress-free volume, where the slack wall folds into
 // the urine mesh and a voiding step fails, level 1 continues the voiding from level 2's
 // state (docs/navier-stokes.md §8). Its own outputs: fluid.pvd (velocity, pressure, wall
-// shear) and the summary keys level, tetrahedra, max_velocity_mm_s, max_wall_shear_pa,
-// min_tet_radius_ratio, remeshes, level1_from, newton.seconds_per_step, time_steps_s.
+// shear, vorticity, Q-criterion, the outlet's axis), jet.csv (the jet into the urethra per
+// voiding step, OutletJet.h) and the summary keys level, tetrahedra, max_velocity_mm_s,
+// max_wall_shear_pa, min_tet_radius_ratio, remeshes, level1_from, jet,
+// newton.seconds_per_step, time_steps_s.
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -28,6 +30,7 @@
 #include "StepStatistics.h"
 #include "fluid/FluidModel.h"
 #include "fluid/FluidWallCoupling.h"
+#include "fluid/OutletJet.h"
 #include "vesica/simulate/CystometrySettings.h"
 
 namespace vesica::simulate::fluid {
@@ -65,6 +68,12 @@ class NavierStokesCavity final : public CavityModel {
   void add_frame(double time_s, bool write) override;
   void finish_frames() override;
   std::vector<std::string> take_notes() override;
+  // Checkpoints (NavierStokesCavityState.cpp): between two filling or holding steps (the
+  // urethra closed, level 2 itself running): the wall's history, the coupling's state
+  // (remeshed tetrahedra included), bookkeeping and counters.
+  bool saves_state() const override { return true; }
+  void save_state(CheckpointWriter& out) const override;
+  void restore_state(CheckpointReader& in) override;
   std::string progress_label() const override {
     return collapse_ ? " (level 1 below the stress-free volume)" : " (level 2)";
   }
@@ -97,7 +106,8 @@ class NavierStokesCavity final : public CavityModel {
   double collapse_time_s_ = -1.0, collapse_volume_ = 0.0;  // of the hand-over
   Inflow inflow_;
   std::vector<std::array<int, 3>> outlet_faces_;
-  WallLoads last_loads_;  // of the last converged step
+  std::vector<OutletJetRow> jet_;  // one per converged step with the urethra open
+  WallLoads last_loads_;           // of the last converged step
   std::unique_ptr<FluidVtuSeries> fluid_series_;
   std::vector<std::string> notes_;
   double V_reference_ = 0.0;  // stress-free volume of the wall (m³)

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vesica/compare/CalibrationResult.h"
+#include "vesica/compare/FluidJetPicture.h"
 #include "vesica/compare/RecordingAnalysis.h"
 #include "vesica/compare/SexSpecificCriteria.h"
 #include "vesica/compare/SimulationSettings.h"
@@ -31,6 +32,7 @@ struct ReportInputs {
   const RecordingAnalysis* simulated = nullptr;
   const CalibrationResult* calibration = nullptr;
   std::optional<WallStressPicture> wall_stress;  // none when no frame was available
+  std::optional<FluidJetPicture> fluid_jet;      // level 2's jet at Qmax; none at level 1
   const nlohmann::json* comparison = nullptr;    // compare_models(), or none
   PatientFacts patient;
   std::optional<SimulationSettings> settings;  // of the simulated recording

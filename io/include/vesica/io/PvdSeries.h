@@ -28,6 +28,24 @@ class PvdSeries {
   // Writes the .pvd (after the steps), then view.py when asked for.
   void finish();
 
+  // Where the series stands: its steps (time in s, file relative to the .pvd), their field
+  // names and the step of largest volume, so that a resumed simulation continues it with
+  // the earlier steps' files back in place (vesica-simulate --resume).
+  struct Progress {
+    std::vector<std::pair<double, std::string>> steps;
+    std::vector<std::string> fields;
+    double largest_volume_ml = -1.0, largest_volume_time_s = 0.0;
+  };
+  Progress progress() const {
+    return {steps_, fields_, largest_volume_ml_, largest_volume_time_s_};
+  }
+  void resume(Progress p) {
+    steps_ = std::move(p.steps);
+    fields_ = std::move(p.fields);
+    largest_volume_ml_ = p.largest_volume_ml;
+    largest_volume_time_s_ = p.largest_volume_time_s;
+  }
+
   std::filesystem::path pvd_path() const { return folder_ / (name_ + ".pvd"); }
   std::filesystem::path steps_folder() const { return folder_ / name_; }
 

@@ -15,6 +15,7 @@
 // RunOptions{} writes nothing (fast repeated calls); set output_dir for files, and
 // filling_only to stop at capacity. Level 2 also needs the urine tetrahedra as read
 // (read_urine in MeshReader.h) and RunOptions::level = 2.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,14 @@ struct FluidMesh;
 
 // One row of history.csv (clinical units, named by the suffixes); io owns the file.
 using HistoryRow = io::HistoryRow;
+
+// Thrown out of run_cystometry when SIGTERM or SIGINT stopped a run that writes checkpoints
+// (RunOptions::checkpoints), after the checkpoint of the step it arrived in; what() says
+// where the checkpoint is. The caller exits with 128 + signal.
+struct RunInterrupted : std::runtime_error {
+  RunInterrupted(int signal, const std::string& what) : std::runtime_error(what), signal(signal) {}
+  int signal;
+};
 
 struct CystometryResult {
   std::vector<HistoryRow> history;

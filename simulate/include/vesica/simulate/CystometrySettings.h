@@ -79,7 +79,10 @@ struct Level2Options {
   // RunOptions::max_fill_step_ml's time, growing after easy steps): the slow filling's urine
   // is nearly steady, and backward Euler follows it in large steps.
   double fill_dt_s = 1.0;
-  double void_dt_s = 0.1;         // time step while voiding
+  // Time step while voiding (s); 0: the protocol's adaptive step, from the flow's and the
+  // volume's change per step and the Newton iterations, within [void_dt_min_s, void_dt_max_s].
+  double void_dt_s = 0.0;
+  double void_dt_min_s = 0.01, void_dt_max_s = 0.5;
   double urine_viscosity = 1e-3;  // Pa·s
   Level2LinearSolver linear_solver = Level2LinearSolver::Krylov;
   // The coupled wall–urine Newton (increment tests, 40 iterations, no line search).
@@ -130,6 +133,16 @@ struct RunOptions {
   // of the protocol done (filling up to 0.8, voiding after); the executable draws it.
   std::function<void(const std::string& step, double fraction)> on_progress;
   Level2Options level2;
+  // Checkpoints of a long run (docs/simulate.md, "Checkpoint and resume"): written to
+  // `file` (empty: none) every interval_min minutes of compute and when SIGTERM or SIGINT arrives,
+  // with `identity` (JSON text: the inputs' hashes and the parameters), which a resumed run
+  // must match; resume: continue from the file instead of from the start.
+  struct Checkpoints {
+    std::filesystem::path file;
+    double interval_min = 5.0;
+    std::string identity;
+    bool resume = false;
+  } checkpoints;
 };
 
 }  // namespace vesica::simulate

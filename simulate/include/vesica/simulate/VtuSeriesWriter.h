@@ -11,8 +11,8 @@
 #include <Eigen/Dense>
 
 #include "vesica/io/PvdSeries.h"
-#include "vesica/simulate/WallStress.h"
 #include "vesica/simulate/WallModel.h"
+#include "vesica/simulate/WallStress.h"
 
 namespace vesica::simulate {
 
@@ -33,6 +33,8 @@ class VtuSeriesWriter {
   void finish();
 
   std::filesystem::path pvd_path() const { return series_.pvd_path(); }
+  io::PvdSeries& series() { return series_; }  // its progress, for checkpoints
+  const io::PvdSeries& series() const { return series_; }
   std::filesystem::path series_folder() const { return series_.steps_folder(); }
 
  private:
