@@ -11,6 +11,7 @@
 #include "vesica/compare/CalibrationRun.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/PressureTrace.h"
 
 namespace vesica::compare {
 namespace {
@@ -98,6 +99,24 @@ CalibrationTargets targets_for(const CompareOptions& o, const RecordingAnalysis&
   return t;
 }
 
+// The recording's abdominal pressure from capacity to its last row, against the time
+// since capacity: what a detrusor-voided model replays while it voids, so that a patient's
+// straining raises the model's Pves as it raised hers and the detrusor makes only Pdet.
+// Empty without time or Pabd.
+simulate::PressureTrace recorded_voiding_pabd(const RecordingAnalysis& a) {
+  simulate::PressureTrace trace;
+  const io::Recording& r = a.recording;
+  if (!r.has_time() || r.pabd_cmh2o.empty()) return trace;
+  const double t0 = r.time_s[a.ics.capacity_row];
+  for (std::size_t i = a.ics.capacity_row; i < r.rows(); ++i) {
+    if (!trace.empty() && !(r.time_s[i] > trace.time_s.back())) continue;
+    trace.time_s.push_back(r.time_s[i] - t0);
+    trace.cmh2o.push_back(std::max(0.0, r.pabd_cmh2o[i]));
+  }
+  if (trace.time_s.size() < 2) return {};
+  return trace;
+}
+
 CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
                           const std::vector<ModelParameter>& specs, bool voiding,
                           std::vector<std::string>& notes) {
@@ -128,6 +147,14 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
   const auto& r = a.recording;
   if (!r.pabd_cmh2o.empty())
     m.protocol.pabd_cmh2o = std::max(0.0, r.pabd_cmh2o[a.ics.capacity_row]);
+  if (voiding && !strains(specs, o.simulation)) {
+    m.protocol.voiding_pabd = recorded_voiding_pabd(a);
+    if (!m.protocol.voiding_pabd.empty())
+      notes.push_back(fmt::format(
+          "while voiding the model's abdominal pressure is the recording's ({} readings from "
+          "capacity on): the detrusor makes Pdet, the patient's straining adds to Pves",
+          m.protocol.voiding_pabd.time_s.size()));
+  }
   if (strains(specs, o.simulation)) {
     m.protocol.drive = simulate::VoidingDrive::Straining;
     if (o.simulation.straining_kpa > 0) m.protocol.straining_kpa = o.simulation.straining_kpa;
