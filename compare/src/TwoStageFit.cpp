@@ -74,6 +74,18 @@ void log_values(const char* what, const std::vector<double>& values, const std::
   vesica::log()->debug("{}:{} ({})", what, text, status);
 }
 
+// Each series' share of the cost of one evaluation (sum of its squared scaled residuals).
+void log_series_costs(const CalibrationTargets& t, const Evaluation& e) {
+  std::string text;
+  Eigen::Index row = 0;
+  for (const auto& s : t.series) {
+    const auto n = static_cast<Eigen::Index>(s.x.size());
+    text += " " + s.name + " " + number(e.residuals.segment(row, n).squaredNorm()) + ";";
+    row += n;
+  }
+  vesica::log()->debug("  cost by series:{}", text);
+}
+
 // Stage 1: multi-start least squares on the surrogate; the optima that ran, best first.
 std::vector<Candidate> surrogate_search(FitObjective& surrogate, const Eigen::VectorXd& u0,
                                         const FitBudget& budget, StageLog& log) {
@@ -87,6 +99,7 @@ std::vector<Candidate> surrogate_search(FitObjective& surrogate, const Eigen::Ve
     const auto* point = surrogate.at(o.u);
     if (point && !point->evaluation.failed) found.push_back({o.u, point->cost});
     log_values("surrogate optimum", surrogate.values(o.u), o.status);
+    if (point) log_series_costs(surrogate.targets(), point->evaluation);
   }
   std::sort(found.begin(), found.end(),
             [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
