@@ -74,6 +74,16 @@ void log_values(const char* what, const std::vector<double>& values, const std::
   vesica::log()->debug("{}:{} ({})", what, text, status);
 }
 
+// "(mu 1.14 kPa, k1 47.3 Pa, ...)": where a run was tried, for the notes.
+std::string named_values(const FitObjective& f, const Eigen::VectorXd& u) {
+  const std::vector<double> v = f.values(u);
+  std::string text = "(";
+  for (std::size_t j = 0; j < v.size(); ++j)
+    text += (j ? ", " : "") + f.parameters()[j].name + " " + number(v[j]) + " " +
+            f.parameters()[j].unit;
+  return text + ")";
+}
+
 // Each series' share of the cost of one evaluation (sum of its squared scaled residuals).
 void log_series_costs(const CalibrationTargets& t, const Evaluation& e) {
   std::string text;
@@ -122,8 +132,8 @@ std::optional<Eigen::VectorXd> refine_by_mapping(FitObjective& model, FitObjecti
       u = c.u;
       break;
     }
-    log.notes.push_back("the model could not run a surrogate optimum: " +
-                        current->evaluation.failure);
+    log.notes.push_back("the model could not run the surrogate's optimum " +
+                        named_values(model, c.u) + ": " + current->evaluation.failure);
     log_values("model failed at", model.values(c.u), current->evaluation.failure);
     current = nullptr;
   }
