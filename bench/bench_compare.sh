@@ -16,8 +16,9 @@ bin="$build/bin"
 exe="$bin/vesica-compare"
 data="$here/tests/compare/data"
 shared="${VESICA_SHARED_DIR:-$here/../shared}"
-# The present model voids by straining; with the detrusor laws: mu,k1,k2,contractility,...
-calibrate="${VESICA_BENCH_CALIBRATE:-mu,p_open,r2,straining}"
+# The detrusor-voided default wall: its matrix and fibers from filling, its contractility,
+# activation onset and urethral resistances from voiding (docs/simulate.md, calibration).
+calibrate="${VESICA_BENCH_CALIBRATE:-mu,k1,detrusor,r1,r2,activation_onset}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -55,7 +56,7 @@ if [ -f "$label" ] && [ -x "$bin/vesica-surface" ] && [ -x "$bin/vesica-mesh" ];
     --outlet-radius-mm 12 >/dev/null 2>&1
   "$bin/vesica-mesh" "$work/ct.vtp" -o "$work/ct.msh" --thickness-mm 3 >/dev/null 2>&1
   if ct_t=$(timed "$exe" --measured "$data/normal-female-34y.csv" --mesh "$work/ct.vtu" \
-      --calibrate "$calibrate" --straining-kpa 4 -o "$work/ct-cal"); then
+      --calibrate "$calibrate" -o "$work/ct-cal"); then
     ct_json=$(python3 - "$work/ct-cal/metrics.json" $ct_t <<'PY'
 import json, sys
 c = json.load(open(sys.argv[1]))["calibration"]

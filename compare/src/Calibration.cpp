@@ -6,7 +6,6 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/SphereMesh.h"
 
 namespace vesica::compare {
 namespace {
@@ -39,6 +38,13 @@ void opening_pressure(double cmh2o, simulate::MaterialSpec&, simulate::ProtocolS
   p.p_close_cmh2o = std::min(p.p_close_cmh2o, cmh2o);
 }
 
+// The urethra's closing pressure; its opening pressure (at least the closing one) follows
+// a fitted p_close above it.
+void closing_pressure(double cmh2o, simulate::MaterialSpec&, simulate::ProtocolSettings& p) {
+  p.p_close_cmh2o = cmh2o;
+  p.p_open_cmh2o = std::max(p.p_open_cmh2o, cmh2o);
+}
+
 // A fitted bulk modulus no longer follows mu.
 void bulk_modulus(double kpa, simulate::MaterialSpec& m, simulate::ProtocolSettings&) {
   m.params.erase("K_per_mu");
@@ -65,6 +71,10 @@ const std::vector<ModelParameter>& all_parameters() {
       {{"straining", "kPa", 4.0, 0.1, 20.0, true}, straining},
       {{"activation_onset", "s", 2.0, 0.05, 60.0, true},
        protocol(&ProtocolSettings::activation_onset_s)},
+      // The fade of the drive sets the flow's tail-off and so the flow time (§7.2).
+      {{"activation_fade", "s", 5.0, 0.1, 60.0, true},
+       protocol(&ProtocolSettings::activation_fade_s)},
+      {{"p_close", "cmH2O", 10.0, 0.5, 150.0, true}, closing_pressure},
   };
   return all;
 }
@@ -113,17 +123,19 @@ Recording recording_from_history(const std::vector<simulate::HistoryRow>& h) {
 
 ModelSimulator cystometry_simulator(const CystometryModel& base,
                                     const std::vector<ModelParameter>& parameters,
-                                    double capacity_ml, bool voiding) {
+                                    double capacity_ml, bool voiding, bool differentiated) {
   CystometryModel m = base;
   m.protocol.capacity_ml = capacity_ml;
   m.protocol.void_after_fill = voiding;
   m.run.filling_only = !voiding;
   m.run.output_dir.clear();
   m.run.on_progress = nullptr;
-  // Every iteration a fresh tangent: the fit's finite-difference Jacobian needs curves
-  // converged far below the Newton tolerance (quadratic convergence overshoots it), not
-  // the chord iterations' just-below-tolerance ones, whose noise narrows the intervals.
-  m.run.newton.reuse_tangent_ratio = 0.0;
+  // Every iteration a fresh tangent when the fit differentiates this model: its
+  // finite-difference Jacobian needs curves converged far below the Newton tolerance
+  // (quadratic convergence overshoots it), not the chord iterations' just-below-tolerance
+  // ones, whose noise narrows the intervals. A model the output space mapping only runs
+  // keeps the cheaper chord iterations.
+  if (differentiated) m.run.newton.reuse_tangent_ratio = 0.0;
   return [m, parameters](const std::vector<double>& values) {
     CystometryModel trial = m;
     for (std::size_t j = 0; j < parameters.size(); ++j)
@@ -143,21 +155,12 @@ ModelSimulator cystometry_simulator(const CystometryModel& base,
   };
 }
 
-simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m) {
-  const double radius = std::cbrt(3.0 * units::m3_from_ml(reference_ml) / (4.0 * M_PI));
-  simulate::WallModel wall = simulate::sphere_wall(radius, thickness_m, 4);
-  simulate::fix_sphere_rigid_modes(wall);
-  return wall;
-}
-
 CystometryModel surrogate_of(const CystometryModel& model) {
-  // simulate's level 0 (the same wall's sphere-equivalent, surrogate.run.level = 0) is the
-  // switch that belongs here; measured, it made the whole recording's calibration on the
-  // CT wall need several times the CPU (the output space mapping ran many more wall
-  // runs), so the coarse sphere stays until that is understood.
+  // simulate's level 0: the same wall's sphere-equivalent with the same material,
+  // activation and urethra (docs/physics.md §11), milliseconds a cystometry. Its misfit to
+  // the wall is what the output space mapping corrects, with a few wall runs in all.
   CystometryModel surrogate = model;
-  const double thickness = model.wall.thickness.empty() ? 3e-3 : model.wall.thickness[0];
-  surrogate.wall = surrogate_sphere(model.protocol.start_ml, thickness);
+  surrogate.run.level = 0;
   return surrogate;
 }
 
@@ -170,15 +173,16 @@ FitOutcome calibrate(const CalibrationProblem& pb) {
   fit.targets = pb.targets;
   const double capacity = pb.targets.capacity_ml;
   const bool voiding = pb.targets.voiding;
-  fit.model = cystometry_simulator(pb.model, pb.parameters, capacity, voiding);
+  // With a surrogate the wall is only run (the Jacobian is the corrected surrogate's).
+  fit.model = cystometry_simulator(pb.model, pb.parameters, capacity, voiding, !pb.use_surrogate);
   fit.model_name = "wall of " + std::to_string(pb.model.wall.triangle_count()) + " triangles";
   const double end = std::max(capacity, pb.data_end_ml);
-  if (end > capacity) fit.final_model = cystometry_simulator(pb.model, pb.parameters, end, voiding);
+  if (end > capacity)
+    fit.final_model = cystometry_simulator(pb.model, pb.parameters, end, voiding, false);
   if (pb.use_surrogate) {
     const CystometryModel surrogate = surrogate_of(pb.model);
-    fit.surrogate = cystometry_simulator(surrogate, pb.parameters, capacity, voiding);
-    fit.surrogate_name =
-        "sphere of " + std::to_string(surrogate.wall.triangle_count()) + " triangles (surrogate)";
+    fit.surrogate = cystometry_simulator(surrogate, pb.parameters, capacity, voiding, true);
+    fit.surrogate_name = "0-D sphere-equivalent of the wall (surrogate)";
   }
   fit.budget = pb.budget;
   return fit_parameters(fit);

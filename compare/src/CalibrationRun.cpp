@@ -11,20 +11,28 @@
 #include "vesica/compare/CalibrationRun.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/PressureTrace.h"
 
 namespace vesica::compare {
 namespace {
 
 constexpr double kStandardFillRateMlMin = 50.0;  // ICS medium filling, docs/physics.md §7.1
 
-std::vector<ModelParameter> parse_parameters(const std::string& list, const CalibrationModel& m) {
+// The default bladder wall's passive parameters (docs/simulate.md "Default walls"): the
+// start of a fit of the detrusor-voided model, whose wall is that one.
+constexpr double kBladderMuKpa = 1.0, kBladderK1Pa = 60.0, kBladderK2 = 0.045;
+
+std::vector<ModelParameter> parse_parameters(const std::string& list, const CalibrationModel& m,
+                                             bool bladder) {
   std::vector<ModelParameter> specs;
   std::stringstream ss(list);
   for (std::string name; std::getline(ss, name, ',');) {
     if (name.empty()) continue;
     ModelParameter s = model_parameter(name);
     double& start = s.fit.initial;
-    if (name == "mu") start = m.mu_kpa;
+    if (name == "mu") start = bladder ? kBladderMuKpa : m.mu_kpa;
+    if (name == "k1" && bladder) start = kBladderK1Pa;
+    if (name == "k2" && bladder) start = kBladderK2;
     if (name == "k" && m.k_kpa > 0) start = m.k_kpa;
     if (name == "straining" && m.straining_kpa > 0) start = m.straining_kpa;
     if (name == "detrusor" && m.detrusor_kpa > 0) start = m.detrusor_kpa;
@@ -91,16 +99,40 @@ CalibrationTargets targets_for(const CompareOptions& o, const RecordingAnalysis&
   return t;
 }
 
+// The recording's abdominal pressure from capacity to its last row, against the time
+// since capacity: what a detrusor-voided model replays while it voids, so that a patient's
+// straining raises the model's Pves as it raised hers and the detrusor makes only Pdet.
+// Empty without time or Pabd.
+simulate::PressureTrace recorded_voiding_pabd(const RecordingAnalysis& a) {
+  simulate::PressureTrace trace;
+  const io::Recording& r = a.recording;
+  if (!r.has_time() || r.pabd_cmh2o.empty()) return trace;
+  const double t0 = r.time_s[a.ics.capacity_row];
+  for (std::size_t i = a.ics.capacity_row; i < r.rows(); ++i) {
+    if (!trace.empty() && !(r.time_s[i] > trace.time_s.back())) continue;
+    trace.time_s.push_back(r.time_s[i] - t0);
+    trace.cmh2o.push_back(std::max(0.0, r.pabd_cmh2o[i]));
+  }
+  if (trace.time_s.size() < 2) return {};
+  return trace;
+}
+
 CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
                           const std::vector<ModelParameter>& specs, bool voiding,
                           std::vector<std::string>& notes) {
   CystometryModel m;
+  m.material.name = material_for(specs, o.simulation, voiding);
   simulate::WallOptions wall_options;
   wall_options.thickness_mm = o.simulation.thickness_mm;
-  wall_options.residual_ml = o.simulation.start_ml;
+  // The bladder wall is stress-free at its own residual volume (WallOptions' default, below
+  // the start of filling: docs/simulate.md "Default walls"), so that it starts filling at a
+  // positive Pdet and can void below the start volume while taut; the plain laws at the
+  // start volume, as the filling-only fits always were.
+  if (m.material.name != "bladder") wall_options.residual_ml = o.simulation.start_ml;
   m.wall = simulate::load_wall(o.mesh, wall_options);
-  m.material.name = material_for(specs, o.simulation, voiding);
-  m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
+  // The bladder wall keeps its own passive parameters unless fitted.
+  if (m.material.name != "bladder")
+    m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
   if (o.simulation.k_kpa > 0.0)
     m.material.params["K"] = units::pa_from_kpa(o.simulation.k_kpa);
   else
@@ -115,6 +147,14 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
   const auto& r = a.recording;
   if (!r.pabd_cmh2o.empty())
     m.protocol.pabd_cmh2o = std::max(0.0, r.pabd_cmh2o[a.ics.capacity_row]);
+  if (voiding && !strains(specs, o.simulation)) {
+    m.protocol.voiding_pabd = recorded_voiding_pabd(a);
+    if (!m.protocol.voiding_pabd.empty())
+      notes.push_back(fmt::format(
+          "while voiding the model's abdominal pressure is the recording's ({} readings from "
+          "capacity on): the detrusor makes Pdet, the patient's straining adds to Pves",
+          m.protocol.voiding_pabd.time_s.size()));
+  }
   if (strains(specs, o.simulation)) {
     m.protocol.drive = simulate::VoidingDrive::Straining;
     if (o.simulation.straining_kpa > 0) m.protocol.straining_kpa = o.simulation.straining_kpa;
@@ -129,9 +169,11 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
 CalibrationResult calibrate_from_options(const CompareOptions& o, const RecordingAnalysis& a,
                                          const ComparisonOptions& comparison) {
   CalibrationProblem pb;
-  pb.parameters = parse_parameters(o.calibrate, o.simulation);
-  const bool voiding = std::any_of(pb.parameters.begin(), pb.parameters.end(),
+  const std::vector<ModelParameter> named = parse_parameters(o.calibrate, o.simulation, false);
+  const bool voiding = std::any_of(named.begin(), named.end(),
                                    [](const ModelParameter& p) { return p.fit.voiding; });
+  pb.parameters = parse_parameters(o.calibrate, o.simulation,
+                                   material_for(named, o.simulation, voiding) == "bladder");
   pb.targets = targets_for(o, a, comparison, voiding);
   std::vector<std::string> notes;
   pb.model = model_for(o, a, pb.parameters, voiding, notes);
@@ -140,7 +182,8 @@ CalibrationResult calibrate_from_options(const CompareOptions& o, const Recordin
   pb.budget.surrogate_starts = o.simulation.surrogate_starts;
   pb.budget.model_simulations = o.max_simulations;
   FitOutcome out = calibrate(pb);
-  if (voiding) out.result.voiding = voiding_agreement(a, out.final_run.recording);
+  if (voiding && out.final_run.recording.rows() > 0)
+    out.result.voiding = voiding_agreement(a, out.final_run.recording);
   notes.push_back(fmt::format("the model fills at {:.3g} ml/min from {:g} ml",
                               pb.model.protocol.fill_rate_ml_min, pb.model.protocol.start_ml));
   out.result.notes.insert(out.result.notes.begin(), notes.begin(), notes.end());

@@ -11,8 +11,14 @@ namespace vesica::compare {
 namespace {
 
 constexpr double kPressureScale = 1.0;  // cmH2O: recordings give whole cmH2O
-constexpr double kFlowScale = 1.0;      // ml/s: uroflowmeters give whole ml/s
-constexpr double kVoidedScale = 10.0;   // ml: one reading, as heavy as a few flow rows
+// cmH2O: Pdet while voiding is the difference of two channels that the voiding's straining
+// moves by several cmH2O (Pabd swings of 10 cmH2O and more), which a model with a resting
+// abdomen does not reproduce: it weighs as a reading that uncertain.
+constexpr double kVoidingPressureScale = 5.0;
+constexpr double kFlowScale = 1.0;     // ml/s: uroflowmeters give whole ml/s
+constexpr double kVoidedScale = 10.0;  // ml: one reading, as heavy as a few flow rows
+// s: the onset of flow is read off to the recording's row spacing of a few seconds
+constexpr double kOnsetScale = 2.0;
 // A run "reaches" a volume within this (it stops at capacity to the Newton tolerance).
 constexpr double kReachToleranceMl = 0.01;
 
@@ -29,6 +35,7 @@ std::string number(double v) {
 struct SimulatedCurves {
   Curve filling;                  // Pdet(V) from the start to capacity
   std::optional<double> onset_s;  // onset of flow (docs/physics.md §7.3)
+  double capacity_s = 0;          // time of the end of filling
   Curve flow_t, pdet_t;           // against the time since the onset, to the end of the run
   Curve flow_v, pdet_v;           // against the voided volume, from capacity on
   double voided_ml = 0;           // at the end of the run
@@ -49,6 +56,7 @@ SimulatedCurves simulated_curves(const Recording& r) {
     c.flow_v.y.push_back(flow ? r.flow_ml_s[i] : 0.0);
   }
   c.onset_s = ics.voiding_start_s;
+  if (r.has_time()) c.capacity_s = r.time_s[ics.capacity_row];
   if (!c.onset_s) return c;
   for (std::size_t i = 0; i < r.rows(); ++i) {
     if (r.time_s[i] < *c.onset_s) continue;
@@ -131,6 +139,16 @@ SeriesValues series_values(const TargetSeries& s, const SimulatedCurves& c, cons
       break;
   }
   SeriesValues v;
+  if (s.quantity == Quantity::OnsetDelay) {
+    // A run that never opened its urethra has no onset: not compared (its flow is).
+    if (c.onset_s)
+      v.y = {*c.onset_s - c.capacity_s};
+    else if (run.completed)
+      v.y = {kNaN};
+    else
+      v.failure = "the run stopped before the onset of flow" + stopped(run);
+    return v;
+  }
   if (!run.completed)
     v.failure = "the run stopped before the end of voiding" + stopped(run);
   else
@@ -159,7 +177,7 @@ void add_timed_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
     if (r.flow_ml_s[i] > 0) last_flow = i;
   TargetSeries q = series("voiding flow", Quantity::Flow, Abscissa::TimeSinceFlowOnset, kFlowScale);
   TargetSeries p =
-      series("voiding Pdet", Quantity::Pdet, Abscissa::TimeSinceFlowOnset, kPressureScale);
+      series("voiding Pdet", Quantity::Pdet, Abscissa::TimeSinceFlowOnset, kVoidingPressureScale);
   for (std::size_t i = 0; i < r.rows(); ++i) {
     if (r.time_s[i] < onset) continue;
     q.x.push_back(r.time_s[i] - onset);
@@ -176,7 +194,8 @@ void add_timed_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
 void add_volume_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
   const Recording& r = m.recording;
   const std::vector<double> voided = r.voided_or_integrated_ml();
-  TargetSeries p = series("voiding Pdet", Quantity::Pdet, Abscissa::VoidedVolume, kPressureScale);
+  TargetSeries p =
+      series("voiding Pdet", Quantity::Pdet, Abscissa::VoidedVolume, kVoidingPressureScale);
   TargetSeries q = series("voiding flow", Quantity::Flow, Abscissa::VoidedVolume, kFlowScale);
   for (std::size_t i = m.ics.capacity_row; i < r.rows(); ++i) {
     if (r.has_flow()) {
@@ -201,6 +220,8 @@ std::string TargetSeries::unit() const {
       return "ml/s";
     case Quantity::VoidedVolume:
       return "ml";
+    case Quantity::OnsetDelay:
+      return "s";
   }
   return "";
 }
@@ -216,7 +237,7 @@ std::string TargetSeries::abscissa_name() const {
     case Abscissa::None:
       break;
   }
-  return "end of voiding";
+  return quantity == Quantity::OnsetDelay ? "from the end of filling" : "end of voiding";
 }
 
 std::size_t CalibrationTargets::size() const {
@@ -254,6 +275,12 @@ bool add_voiding_targets(const RecordingAnalysis& m, CalibrationTargets& t) {
   v.x = {0.0};
   v.y = {*m.ics.voided_ml};
   t.series.push_back(std::move(v));
+  if (m.ics.voiding_start_s && r.has_time()) {
+    TargetSeries d = series("onset of flow", Quantity::OnsetDelay, Abscissa::None, kOnsetScale);
+    d.x = {0.0};
+    d.y = {*m.ics.voiding_start_s - r.time_s[m.ics.capacity_row]};
+    t.series.push_back(std::move(d));
+  }
   t.voiding = t.series.size() > before;
   if (m.ics.capacity_ml) t.capacity_ml = *m.ics.capacity_ml;
   return t.voiding;

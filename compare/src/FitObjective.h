@@ -52,6 +52,7 @@ class FitObjective {
   bool spent() const { return simulations_ >= budget_; }
   int inputs() const { return static_cast<int>(parameters_.size()); }
   int values_count() const { return static_cast<int>(targets_.size()); }
+  const CalibrationTargets& targets() const { return targets_; }
   const std::vector<FitParameter>& parameters() const { return parameters_; }
   // Why the failed runs failed, each reason once, with its count.
   std::vector<std::string> failure_summary() const;

@@ -63,6 +63,18 @@ std::string flow_plot(const ReportInputs& in) {
   }
   std::string caption = "Uroflow from the onset of measurable flow";
   if (in.simulated) caption += "; simulated: " + simulated_voiding_label(in);
+  // The calibrated model's flow, from its own onset: the curve the fit's Q(t) correlation
+  // compares with the measured one.
+  const auto* fitted =
+      in.calibration && in.calibration->voiding ? &*in.calibration->voiding : nullptr;
+  if (fitted && !fitted->simulated_flow_ml_s.x.empty()) {
+    plot.add(SvgPlot::Series{"fitted model", fitted->simulated_flow_ml_s.x,
+                             fitted->simulated_flow_ml_s.y, SvgPlot::Style::Line, kFitted, 2.5, 3.5,
+                             true});
+    caption += "; fitted model: the calibration's run, onsets aligned";
+    if (fitted->flow_correlation)
+      caption += " (correlation " + number(*fitted->flow_correlation) + ")";
+  }
   return figure(plot, caption + ".");
 }
 

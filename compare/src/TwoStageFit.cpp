@@ -56,6 +56,8 @@ std::vector<Eigen::VectorXd> start_points(const std::vector<FitParameter>& param
   return starts;
 }
 
+constexpr std::size_t kModelCandidates = 2;
+
 struct Candidate {
   Eigen::VectorXd u;
   double cost = 0;
@@ -72,6 +74,28 @@ void log_values(const char* what, const std::vector<double>& values, const std::
   vesica::log()->debug("{}:{} ({})", what, text, status);
 }
 
+// "(mu 1.14 kPa, k1 47.3 Pa, ...)": where a run was tried, for the notes.
+std::string named_values(const FitObjective& f, const Eigen::VectorXd& u) {
+  const std::vector<double> v = f.values(u);
+  std::string text = "(";
+  for (std::size_t j = 0; j < v.size(); ++j)
+    text += (j ? ", " : "") + f.parameters()[j].name + " " + number(v[j]) + " " +
+            f.parameters()[j].unit;
+  return text + ")";
+}
+
+// Each series' share of the cost of one evaluation (sum of its squared scaled residuals).
+void log_series_costs(const CalibrationTargets& t, const Evaluation& e) {
+  std::string text;
+  Eigen::Index row = 0;
+  for (const auto& s : t.series) {
+    const auto n = static_cast<Eigen::Index>(s.x.size());
+    text += " " + s.name + " " + number(e.residuals.segment(row, n).squaredNorm()) + ";";
+    row += n;
+  }
+  vesica::log()->debug("  cost by series:{}", text);
+}
+
 // Stage 1: multi-start least squares on the surrogate; the optima that ran, best first.
 std::vector<Candidate> surrogate_search(FitObjective& surrogate, const Eigen::VectorXd& u0,
                                         const FitBudget& budget, StageLog& log) {
@@ -85,6 +109,7 @@ std::vector<Candidate> surrogate_search(FitObjective& surrogate, const Eigen::Ve
     const auto* point = surrogate.at(o.u);
     if (point && !point->evaluation.failed) found.push_back({o.u, point->cost});
     log_values("surrogate optimum", surrogate.values(o.u), o.status);
+    if (point) log_series_costs(surrogate.targets(), point->evaluation);
   }
   std::sort(found.begin(), found.end(),
             [](const Candidate& a, const Candidate& b) { return a.cost < b.cost; });
@@ -97,15 +122,18 @@ std::optional<Eigen::VectorXd> refine_by_mapping(FitObjective& model, FitObjecti
                                                  const FitBudget& budget, StageLog& log) {
   const FitObjective::Point* current = nullptr;
   Eigen::VectorXd u;
-  for (const auto& c : candidates) {
+  // The best two surrogate optima: a model that runs neither is not rescued by more of
+  // them, and each costs whole model runs (a failed one twice: it is retried).
+  const std::size_t tried = std::min<std::size_t>(candidates.size(), kModelCandidates);
+  for (const auto& c : std::vector<Candidate>(candidates.begin(), candidates.begin() + tried)) {
     current = model.at(c.u);
     if (!current) return std::nullopt;
     if (!current->evaluation.failed) {
       u = c.u;
       break;
     }
-    log.notes.push_back("the model could not run a surrogate optimum: " +
-                        current->evaluation.failure);
+    log.notes.push_back("the model could not run the surrogate's optimum " +
+                        named_values(model, c.u) + ": " + current->evaluation.failure);
     log_values("model failed at", model.values(c.u), current->evaluation.failure);
     current = nullptr;
   }
@@ -282,8 +310,14 @@ std::vector<ParameterUncertainty> undetermined(const std::vector<FitParameter>& 
 void all_failed(const FitProblem& pb, const FitObjective& model, const FitObjective* surrogate,
                 CalibrationResult& r) {
   const int runs = model.simulations() + (surrogate ? surrogate->simulations() : 0);
-  r.status = "failed: every one of the " + std::to_string(runs) +
-             " runs stopped before the end of the data; nothing was fitted";
+  const int surrogate_ran = surrogate ? surrogate->simulations() - surrogate->failures() : 0;
+  r.status = surrogate_ran > 0
+                 ? "failed: the " + pb.model_name + " ran none of the surrogate's best optima (" +
+                       std::to_string(model.failures()) + " of its " +
+                       std::to_string(model.simulations()) +
+                       " runs stopped before the end of the data); nothing was fitted"
+                 : "failed: every one of the " + std::to_string(runs) +
+                       " runs stopped before the end of the data; nothing was fitted";
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);
   fill_parameters(pb.parameters, start, undetermined(pb.parameters, "not fitted"), r);
@@ -319,10 +353,9 @@ std::optional<Eigen::VectorXd> find_optimum(const FitProblem& pb, FitObjective& 
   const auto tm = Clock::now();
   model.set_budget(refine_budget);
   best = refine_by_mapping(model, *surrogate, candidates, pb.budget, log);
-  if (!best && !model.spent()) {
-    log.notes.push_back("no surrogate optimum ran on the model: fitted on the model directly");
-    best = refine_directly(model, u0, refine_budget - model.simulations(), log);
-  }
+  // Not fitted on the model directly: that costs O(parameters) model runs an iteration,
+  // the very cost the surrogate is there to avoid; the failure is the result.
+  if (!best) log.notes.push_back("the model ran none of the surrogate's best optima");
   r.stages.push_back(stage("model refinement (output space mapping)", pb.model_name, model,
                            seconds_since(tm), cost()));
   return best;
@@ -334,10 +367,17 @@ void report_optimum(const FitProblem& pb, FitObjective& model, FitObjective* sur
   CalibrationResult& r = out.result;
   const std::vector<double> values = model.values(best);
   const Evaluation at_best = model.at(best)->evaluation;
-  auto J = model.jacobian(best, &r.notes);
+  // With a surrogate, J is the corrected surrogate's (its residual plus the model's misfit
+  // to it at the optimum, a constant): m + 1 more model runs would cost more than the fit.
+  if (surrogate) surrogate->set_budget(surrogate->simulations() + 2 * (int(values.size()) + 1));
+  auto J = surrogate ? surrogate->jacobian(best, &r.notes) : model.jacobian(best, &r.notes);
+  if (J && surrogate)
+    r.notes.push_back(
+        "intervals from the Jacobian of the surrogate corrected by the model's output at the "
+        "optimum (output space mapping), not from model runs");
   if (!J && surrogate) {
-    J = surrogate->jacobian(best, &r.notes);
-    r.notes.push_back("intervals from the surrogate's Jacobian: the model's budget is spent");
+    J = model.jacobian(best, &r.notes);
+    r.notes.push_back("intervals from the model's Jacobian: the surrogate's budget is spent");
   }
   const std::vector<ParameterUncertainty> u =
       J ? uncertainty(*J, at_best, pb.parameters, values)
@@ -382,8 +422,8 @@ FitOutcome fit_parameters(const FitProblem& pb) {
   FitOutcome out;
   CalibrationResult& r = out.result;
   const int m = static_cast<int>(pb.parameters.size());
-  // The model's Jacobian at the optimum and the final run come after the refinement.
-  const int reserve = pb.budget.model_simulations >= 2 * (m + 1) ? m + 1 : 0;
+  // Without a surrogate the model's Jacobian at the optimum comes after the refinement.
+  const int reserve = !pb.surrogate && pb.budget.model_simulations >= 2 * (m + 1) ? m + 1 : 0;
   FitObjective model(pb.parameters, pb.targets, pb.model, pb.budget.model_simulations);
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);

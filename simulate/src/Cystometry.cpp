@@ -62,6 +62,8 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
   require(p.activation_onset_s >= 0.0 && p.activation_plateau_s >= 0.0 &&
               p.activation_fade_s >= 0.0 && p.straining_kpa >= 0.0,
           "activation times and straining_kpa must be >= 0");
+  if (const std::string why = p.voiding_pabd.problem(); !why.empty())
+    usage_error("the recorded abdominal pressure while voiding " + why);
   if (o.level < 0 || o.level > 2) usage_error("level must be 0, 1 or 2");
   if (o.level == 2) {
     if (!(o.level2.fill_dt_s >= 0.0 && o.level2.void_dt_s >= 0.0))
@@ -104,6 +106,9 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
 
 std::string history_label(const CystometryResult& result) {
   const std::string drive = result.summary.value("voiding_drive", "none");
+  const bool recorded = result.summary.value("voiding_pabd", "") == "recorded";
+  if (drive == "detrusor" && recorded)
+    return "voided by detrusor contraction, abdominal pressure as recorded";
   if (drive == "detrusor") return "voided by detrusor contraction";
   if (drive == "straining") return "voided by abdominal straining";
   return "not voided";

@@ -140,9 +140,13 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
 }
 
 ProtocolLoads CystometryProtocol::loads_at(double t) const {
-  const double a = t_void_ >= 0.0 ? activation_.at(t - t_void_) : 0.0;
+  const bool voiding = t_void_ >= 0.0;
+  const double a = voiding ? activation_.at(t - t_void_) : 0.0;
   const bool straining = settings_.drive == VoidingDrive::Straining;
-  return {units::pa_from_cmh2o(settings_.pabd_cmh2o) +
+  const double pabd_cmh2o = voiding && !settings_.voiding_pabd.empty()
+                                ? settings_.voiding_pabd.at(t - t_void_)
+                                : settings_.pabd_cmh2o;
+  return {units::pa_from_cmh2o(pabd_cmh2o) +
               (straining ? a * units::pa_from_kpa(settings_.straining_kpa) : 0.0),
           straining ? 0.0 : a};
 }
@@ -318,9 +322,11 @@ void CystometryProtocol::void_bladder() {
 }
 
 // Whether a drive that has not opened the urethra never will: fully activated (or fading)
-// and Pves no longer rising over the last step (p_before: Pves before it).
+// and Pves no longer rising over the last step (p_before: Pves before it), and no recorded
+// abdominal pressure still to come.
 bool CystometryProtocol::contraction_spent(double p_before) const {
   const double t = time_ - t_void_;
+  if (!settings_.voiding_pabd.empty() && t < settings_.voiding_pabd.time_s.back()) return false;
   const bool full = t >= kFullOnsets * settings_.activation_onset_s;
   const bool fading = t > settings_.activation_plateau_s;
   const bool still = model_->pves() - p_before < units::pa_from_cmh2o(kStillPressureCmH2O);
@@ -414,6 +420,9 @@ void CystometryProtocol::summarize(double seconds) {
                  {"half_open_cmh2o", settings_.urethra_half_open_cmh2o}};
   // What emptied the bladder: the drive when the urethra opened, else none.
   s["voiding_drive"] = urethra_open_ ? drive_name(settings_.drive) : "none";
+  // What the abdomen did while voiding: the recording's Pabd replayed, or at rest
+  // (straining included in the drive's name).
+  if (voiding_) s["voiding_pabd"] = settings_.voiding_pabd.empty() ? "resting" : "recorded";
   if (voiding_) s["pves_max_voiding_cmh2o"] = units::cmh2o_from_pa(peak_pves_);
   model_->add_summary(s);
 }

@@ -108,7 +108,10 @@ StepResult LumpedCavity::try_step(const StepRequest& step) {
 
 // g(V) = V − V_base + θ dt Q(Pabd + Pdet(V)) is positive at V_base (the urethra can only
 // drain) and increases with V wherever the wall's pressure does; the root is bracketed
-// from below by stepping down, then found by the Illinois variant of false position.
+// from below by steps down that double each time, then found by the Illinois variant of
+// false position. Doubling bounds the bracketing where the slope of g is small: a
+// contracting wall whose pressure rises as it shortens, or an abdomen that keeps the
+// urethra open whatever the volume, would otherwise creep down in ever smaller steps.
 double LumpedCavity::voided_volume(double V_base, const StepRequest& step) {
   const UrethraLaw& urethra = *step.urethra;
   const double dt = step.dt_s;
@@ -118,11 +121,14 @@ double LumpedCavity::voided_volume(double V_base, const StepRequest& step) {
   };
   double hi = V_base, g_hi = g(hi);
   if (g_hi <= 0.0) return hi;
-  double lo = std::max(V_base - g_hi, 1e-3 * V_reference_), g_lo = g(lo);
-  while (g_lo > 0.0 && lo > 1e-3 * V_reference_) {
+  const double floor = 1e-3 * V_reference_;
+  double down = g_hi;  // the root's distance below V_base where the slope of g is 1
+  double lo = std::max(V_base - down, floor), g_lo = g(lo);
+  while (g_lo > 0.0 && lo > floor) {
     hi = lo;
     g_hi = g_lo;
-    lo = std::max(lo - 2.0 * g_lo, 1e-3 * V_reference_);
+    down *= 2.0;
+    lo = std::max(hi - down, floor);
     g_lo = g(lo);
   }
   if (g_lo > 0.0) throw std::runtime_error("voiding equation has no root above the floor");

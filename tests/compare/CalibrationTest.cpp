@@ -182,13 +182,15 @@ TEST(Calibration, VoidingParametersWithoutAVoidingInTheRecordingAreRefused) {
 }
 
 // Acceptance of issue 24 on the README's 2,474-triangle CT wall, for the detrusor-voided
-// model (simulate's muscle and urethra laws, now the default; the surrogate is simulate's
-// level 0). Still disabled for its cost: up to 40 refining runs of the whole cystometry on
-// the CT wall, each tens of seconds, a quarter of an hour and more of CPU; run it with
-// --gtest_also_run_disabled_tests. Targets: filling RMSE <= 1 cmH2O and below the straight line;
-// Qmax within 10 % of 17 ml/s; flow time within 20 % of the measured 39 s; voided volume
-// within 5 % of 350 ml; PdetQmax within 3 cmH2O of 5; Q(t) correlation >= 0.9 after
-// aligning the onsets.
+// default bladder wall: its matrix and fibers from filling, its contractility, activation
+// onset and urethral resistances from voiding (6 parameters), searched on simulate's level 0
+// and refined by output space mapping with a few runs of the wall. Targets: filling RMSE
+// <= 1 cmH2O and below the straight line; Qmax within 10 % of 17 ml/s; flow time within
+// 20 % of the measured 39 s; voided volume within 5 % of 350 ml; PdetQmax within 3 cmH2O
+// of 5; Q(t) correlation >= 0.9 after aligning the onsets. Still disabled: the fit does not
+// meet all of them yet (docs/compare.md, calibration of the shared recording), and each wall
+// run of the detrusor voiding costs minutes on a loaded machine; run it with
+// --gtest_also_run_disabled_tests.
 TEST(Calibration, DISABLED_TheWholeRecordingMeetsTheAcceptanceTargetsOnTheCtWall) {
   VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
   const fs::path dir = scratch_dir("compare-calibration-acceptance");
@@ -199,10 +201,10 @@ TEST(Calibration, DISABLED_TheWholeRecordingMeetsTheAcceptanceTargetsOnTheCtWall
   const auto m = run_command((bin_dir() / "vesica-mesh").string() + " " +
                              (dir / "ct.vtp").string() + " -o " + (dir / "ct.msh").string());
   ASSERT_EQ(m.exit_code, 0) << m.output;
-  const auto c =
-      calibrate("--measured " + compare_data("normal-female-34y.csv").string() + " --mesh " +
-                    (dir / "ct.vtu").string() + " --calibrate mu,k1,k2,detrusor,p_open,r2",
-                dir);
+  const auto c = calibrate("--measured " + compare_data("normal-female-34y.csv").string() +
+                               " --mesh " + (dir / "ct.vtu").string() +
+                               " --calibrate mu,k1,detrusor,r1,r2,activation_onset",
+                           dir);
   ASSERT_FALSE(c.is_null());
   std::cout << c["status"] << "\n";
   const auto* f = series(c, "filling Pdet");

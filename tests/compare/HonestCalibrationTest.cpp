@@ -3,6 +3,8 @@
 // against the constant and straight-line baselines, the fitted model must reach the end of
 // the data, and a calibration whose every run failed says so. Models with known answers
 // (FitTestModels.h) stand in for the simulator.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "FitTestModels.h"
@@ -177,4 +179,44 @@ TEST(TwoStageFit, TheModelsOptimumDespiteABiasedSurrogate) {
   EXPECT_NEAR(fit.parameters[1].value, 1.5, 0.02);
   ASSERT_EQ(fit.stages.size(), 2u);
   EXPECT_GT(fit.stages[0].simulations, fit.stages[1].simulations);
+}
+
+TEST(TwoStageFit, TheModelRunsAFewTimesNotOncePerParameterAndIteration) {
+  // Three parameters, the third one the data ignore; the model costs what the 3-D wall does,
+  // so the mapping runs it once an iteration and the intervals come from the corrected
+  // surrogate (no m + 1 model runs for a Jacobian).
+  vc::FitProblem pb = linear_problem([](double v) { return 2.0 * (v - 50) / 100 + 1.5; });
+  pb.parameters.push_back(parameter("c", 1.0));
+  pb.surrogate = [](const std::vector<double>& p) {
+    return filling_run([](const std::vector<double>& q,
+                          double v) { return 1.1 * q[0] * (v - 50) / 100 + q[1] + 0.4; },
+                       p, 350);
+  };
+  pb.budget.model_simulations = 40;
+  const auto fit = vc::fit_parameters(pb).result;
+  EXPECT_NEAR(fit.parameters[0].value, 2.0, 0.05);
+  EXPECT_NEAR(fit.parameters[1].value, 1.5, 0.05);
+  ASSERT_EQ(fit.stages.size(), 2u);
+  EXPECT_LE(fit.stages[1].simulations, pb.budget.mapping_iterations + 1);
+  EXPECT_FALSE(fit.parameters[2].identifiable);
+  const bool said = std::any_of(fit.notes.begin(), fit.notes.end(), [](const std::string& n) {
+    return n.find("corrected by the model's output") != std::string::npos;
+  });
+  EXPECT_TRUE(said);
+}
+
+TEST(HonestCalibration, AModelThatRunsNoneOfTheSurrogatesOptimaIsNotFittedAndSaysWhy) {
+  // The surrogate runs everywhere; the model stops short everywhere (as the 3-D wall can
+  // near the end of voiding): nothing is fitted on the model's behalf.
+  vc::FitProblem pb = linear_problem([](double v) { return 3.0 * (v - 50) / 100; });
+  pb.surrogate = pb.model;
+  pb.model = [](const std::vector<double>& p) { return filling_run(linear_law, p, 350, 120); };
+  pb.model_name = "wall";
+  const auto fit = vc::fit_parameters(pb).result;
+  EXPECT_FALSE(fit.fitted);
+  EXPECT_NE(fit.status.find("wall ran none of the surrogate's best optima"), std::string::npos)
+      << fit.status;
+  ASSERT_EQ(fit.stages.size(), 2u);
+  EXPECT_LE(fit.stages[1].simulations, 2);
+  for (const auto& p : fit.parameters) EXPECT_FALSE(p.identifiable);
 }

@@ -151,3 +151,56 @@ TEST(LumpedCavity, RunsFromTheCommandLineAsLevelZero) {
   EXPECT_EQ(s["voiding_drive"], "detrusor");
   EXPECT_GT(s["voided_ml"].get<double>(), 300.0);
 }
+
+// A patient who strains while her detrusor voids: with her recorded Pabd replayed, Pves
+// rises by exactly that Pabd while the urethra is closed and the detrusor's Pdet is the one
+// of a resting abdomen (the same wall, activation and volume), the abdomen opening the
+// urethra when Pdet + Pabd reaches p_open.
+TEST(LumpedCavity, RecordedStrainingWhileVoidingAddsToPvesNotToPdet) {
+  const WallModel wall = reference_sphere(20.0, 3e-3);
+  ProtocolSettings rest;
+  rest.gravity = false;
+  rest.pabd_cmh2o = 9.0;
+  rest.p_open_cmh2o = 300.0;  // isovolumetric: the urethra stays closed
+  rest.activation_onset_s = 5.0;
+  rest.max_void_s = 20.0;
+  ProtocolSettings strains = rest;
+  // Hand-made trace: 9 cmH2O at capacity, 25 at 10 s, back to 12 at 20 s.
+  strains.voiding_pabd = {{0.0, 10.0, 20.0}, {9.0, 25.0, 12.0}};
+  const MaterialSpec bladder{"bladder", {}};
+  const CystometryResult a = run_cystometry(wall, bladder, rest, level0());
+  const CystometryResult b = run_cystometry(wall, bladder, strains, level0());
+  ASSERT_TRUE(a.completed) << a.failure;
+  ASSERT_TRUE(b.completed) << b.failure;
+  ASSERT_EQ(a.history.size(), b.history.size());
+  double t_void = 0.0;  // the end of filling: the first row at capacity
+  for (const HistoryRow& row : a.history)
+    if (row.volume_ml >= rest.capacity_ml - 1e-9) {
+      t_void = row.time_s;
+      break;
+    }
+  int compared = 0;
+  for (std::size_t i = 0; i < a.history.size(); ++i) {
+    const double t = b.history[i].time_s - t_void;
+    const double trace = t <= 0.0    ? 9.0
+                         : t <= 10.0 ? 9.0 + 1.6 * t
+                                     : 25.0 - 1.3 * std::min(t - 10.0, 10.0);
+    EXPECT_NEAR(b.history[i].pabd_cmh2o, trace, 1e-9) << "t = " << t;
+    EXPECT_NEAR(b.history[i].pdet_cmh2o, a.history[i].pdet_cmh2o, 1e-9) << "t = " << t;
+    EXPECT_NEAR(b.history[i].pves_cmh2o - a.history[i].pves_cmh2o, trace - 9.0, 1e-9);
+    if (t > 0.0) ++compared;
+  }
+  EXPECT_GT(compared, 5);
+  EXPECT_EQ(b.summary["voiding_pabd"], "recorded");
+  EXPECT_EQ(a.summary["voiding_pabd"], "resting");
+  // Opened by the abdomen: the resting run's Pves peaks below 70 cmH2O (asserted), the
+  // straining one's above it.
+  rest.p_open_cmh2o = strains.p_open_cmh2o = 70.0;
+  rest.p_close_cmh2o = strains.p_close_cmh2o = 10.0;
+  const CystometryResult c = run_cystometry(wall, bladder, rest, level0());
+  const CystometryResult d = run_cystometry(wall, bladder, strains, level0());
+  EXPECT_LT(c.summary["pves_max_voiding_cmh2o"].get<double>(), 70.0);
+  EXPECT_EQ(c.summary["voiding_drive"], "none");
+  EXPECT_EQ(d.summary["voiding_drive"], "detrusor");
+  EXPECT_GT(d.summary["voided_ml"].get<double>(), 10.0);
+}

@@ -4,9 +4,9 @@
 // surrogate as ModelSimulators (vesica::simulate::run_cystometry in this process, no
 // files), and the two-stage fit (TwoStageFit.h) over them.
 //
-// The surrogate, until simulate offers its 0-D sphere-equivalent model: the same laws and
-// protocol on a coarse triangulated sphere of the reference volume (128 triangles), whose
-// runs cost a small fraction of the patient wall's.
+// The surrogate is simulate's level 0 (the wall's sphere-equivalent: the same material,
+// activation and urethra laws, milliseconds a cystometry); the wall is run a few times by
+// the output space mapping and once more for the whole data.
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,14 +40,13 @@ struct CystometryModel {
 };
 
 // Simulates a parameter vector on `base`: applies the values, fills to capacity_ml and, with
-// `voiding`, voids; a run that fails is retried once with halved steps.
+// `voiding`, voids; a run that fails is retried once with halved steps. `differentiated`:
+// the fit takes finite differences of its runs (every Newton iteration a fresh tangent).
 ModelSimulator cystometry_simulator(const CystometryModel& base,
                                     const std::vector<ModelParameter>& parameters,
-                                    double capacity_ml, bool voiding);
+                                    double capacity_ml, bool voiding, bool differentiated);
 
-// The interim surrogate wall: a sphere of `reference_ml` with the thickness `thickness_m`.
-simulate::WallModel surrogate_sphere(double reference_ml, double thickness_m);
-// The fast surrogate of a model: the same material and protocol on the surrogate wall.
+// The fast surrogate of a model: the same wall, material and protocol at level 0.
 CystometryModel surrogate_of(const CystometryModel& model);
 
 struct CalibrationProblem {

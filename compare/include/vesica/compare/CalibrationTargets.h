@@ -29,10 +29,11 @@ namespace vesica::compare {
 inline constexpr double kFailedResidual = 100.0;
 
 enum class Abscissa { BladderVolume, TimeSinceFlowOnset, VoidedVolume, None };
-enum class Quantity { Pdet, Flow, VoidedVolume };
+enum class Quantity { Pdet, Flow, VoidedVolume, OnsetDelay };
 
 struct TargetSeries {
-  std::string name;  // "filling Pdet", "voiding flow", "voiding Pdet", "voided volume"
+  // "filling Pdet", "voiding flow", "voiding Pdet", "voided volume", "onset of flow"
+  std::string name;
   Quantity quantity = Quantity::Pdet;
   Abscissa abscissa = Abscissa::BladderVolume;
   std::vector<double> x, y;  // measured rows: x in ml or s, y in cmH2O, ml/s or ml
@@ -56,7 +57,9 @@ CalibrationTargets filling_targets(const RecordingAnalysis& measured, double lo_
 // Adds the voiding series of a recording with flow or voided volume: with a time column,
 // flow Q(t) of every row from the onset of flow on and Pdet(t) of the unflagged rows from
 // the onset to the last row with flow (t from the onset, docs/physics.md §7.3); without
-// one, Pdet and flow against the voided volume. Then the voided volume. capacity_ml
+// one, Pdet and flow against the voided volume. Then the voided volume, and with time the
+// delay from capacity to the onset of flow (what the recording's abdominal pressure,
+// replayed from capacity, is aligned with: docs/compare.md). capacity_ml
 // becomes the recording's capacity (the voiding starts from it). Returns false when the
 // recording has no voiding.
 bool add_voiding_targets(const RecordingAnalysis& measured, CalibrationTargets& targets);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "vesica/simulate/NewtonOptions.h"
+#include "vesica/simulate/PressureTrace.h"
 #include "vesica/simulate/WallLoading.h"
 
 namespace vesica::simulate {
@@ -30,6 +31,11 @@ struct ProtocolSettings {
   bool void_after_fill = true;
   VoidingDrive drive = VoidingDrive::Detrusor;
   double straining_kpa = 4.0;  // extra abdominal pressure at full straining
+  // The abdominal pressure while voiding as recorded (time from the start of voiding):
+  // replaces pabd_cmh2o from the end of filling on, whatever the drive. A woman who strains
+  // while her detrusor voids raises Pves by her Pabd, and the model's Pdet stays the
+  // detrusor's. Empty: the resting pabd_cmh2o.
+  PressureTrace voiding_pabd;
   double activation_onset_s = 2.0;
   double activation_plateau_s = 60.0;
   double activation_fade_s = 5.0;
