@@ -143,20 +143,45 @@ bool solve_wrinkle_width_jointly(const Material& material, const Eigen::Matrix2d
 // The wrinkle equations along a fixed direction θ: β(θ) from r1 = 0 (bracketed), and then
 // r2 and the tension tᵀ S t. False when no width solves r1 = 0.
 struct WrinkleAt {
-  double beta = 0.0, r2 = 0.0, tension = 0.0;
+  double theta = 0.0, beta = 0.0, r2 = 0.0, tension = 0.0;
   PlaneStressState s;
 };
-bool wrinkle_at(const Material& material, const Eigen::Matrix2d& C2, const MaterialPoint& point,
-                const double* history_old, double* history_new, double theta,
-                const PlaneStressState& start, double beta0, WrinkleAt& out) {
-  const WrinkleFrame w(theta);
-  out.beta = beta0;
-  out.s = start;
-  if (!solve_wrinkle_width(material, C2, point, history_old, history_new, w, out.beta, out.s))
-    return false;
-  out.r2 = w.t.dot(out.s.S * w.m);
-  out.tension = w.t.dot(out.s.S * w.t);
-  return true;
+struct WrinkleProblem {
+  const Material& material;
+  const Eigen::Matrix2d& C2;
+  const MaterialPoint& point;
+  const double* history_old;
+  double* history_new;
+
+  // From the width and thickness of `from`.
+  bool at(double theta, const WrinkleAt& from, WrinkleAt& out) const {
+    const WrinkleFrame w(theta);
+    out.theta = theta;
+    out.beta = from.beta;
+    out.s = from.s;
+    if (!solve_wrinkle_width(material, C2, point, history_old, history_new, w, out.beta, out.s))
+      return false;
+    out.r2 = w.t.dot(out.s.S * w.m);
+    out.tension = w.t.dot(out.s.S * w.t);
+    return true;
+  }
+};
+
+// Bisects r2(θ) between two directions of opposite r2; true with the root in `root` when it
+// carries tension.
+bool bisect_wrinkle_root(const WrinkleProblem& problem, WrinkleAt lo, double theta_hi,
+                         WrinkleAt& root) {
+  double hi = theta_hi;
+  for (int it = 0; it < 200; ++it) {
+    if (!problem.at(0.5 * (lo.theta + hi), lo, root)) return false;
+    if (std::abs(root.r2) <= round_off_stress(root.s) || hi - lo.theta < 1e-14)
+      return root.tension > 0.0;
+    if ((root.r2 > 0.0) == (lo.r2 > 0.0))
+      lo = root;
+    else
+      hi = root.theta;
+  }
+  return false;
 }
 
 // What the global search of the wrinkle direction found (scan_wrinkle_direction).
@@ -164,54 +189,29 @@ enum class Scan { wrinkled, slack, undecided };
 
 // Where Newton on θ finds no root (r2 keeps its sign over its clamped steps: an anisotropic
 // wall whose active fibers pull against a compressive viscous overstress), a root of r2(θ)
-// with tension is searched globally: r2 is sampled over half a turn, and a sign change with
-// positive tension is bisected (wrinkled: theta, beta, s set). Slack when no sampled
-// direction carries tension; undecided when some do but no root was found.
-Scan scan_wrinkle_direction(const Material& material, const Eigen::Matrix2d& C2,
-                            const MaterialPoint& point, const double* history_old,
-                            double* history_new, const PlaneStressState& start, double beta0,
-                            double& theta, double& beta, PlaneStressState& s) {
+// with tension is searched globally: r2 is sampled over half a turn from the start state
+// (width, thickness), and a sign change with positive tension is bisected (wrinkled: root
+// set, the history written at it). Slack when no sampled direction carries tension;
+// undecided when some do but no root was found.
+Scan scan_wrinkle_direction(const WrinkleProblem& problem, const WrinkleAt& start,
+                            WrinkleAt& root) {
   constexpr int kSamples = 36;
   const double pi = std::acos(-1.0);
-  WrinkleAt prev;
-  prev.s = start;
-  double theta_prev = 0.0;
+  WrinkleAt prev = start, here = start;
   bool have_prev = false, any_tension = false;
   int evaluated = 0;
   for (int k = 0; k <= kSamples; ++k) {
-    const double th = pi * k / kSamples;
-    WrinkleAt here = prev;
-    if (!wrinkle_at(material, C2, point, history_old, history_new, th, start, beta0, here)) {
+    if (!problem.at(pi * k / kSamples, start, here)) {
       have_prev = false;
       continue;
     }
     ++evaluated;
     any_tension = any_tension || here.tension > 0.0;
     const bool sign_change = have_prev && (prev.r2 > 0.0) != (here.r2 > 0.0);
-    if (sign_change && (prev.tension > 0.0 || here.tension > 0.0)) {
-      double a = theta_prev, b = th;
-      WrinkleAt fa = prev, mid = prev;
-      for (int it = 0; it < 200; ++it) {
-        const double c = 0.5 * (a + b);
-        if (!wrinkle_at(material, C2, point, history_old, history_new, c, fa.s, fa.beta, mid))
-          break;
-        if (std::abs(mid.r2) <= round_off_stress(mid.s) || b - a < 1e-14) {
-          if (mid.tension <= 0.0) break;
-          theta = c;
-          beta = mid.beta;
-          s = mid.s;
-          return Scan::wrinkled;
-        }
-        if ((mid.r2 > 0.0) == (fa.r2 > 0.0)) {
-          a = c;
-          fa = mid;
-        } else {
-          b = c;
-        }
-      }
-    }
+    if (sign_change && (prev.tension > 0.0 || here.tension > 0.0) &&
+        bisect_wrinkle_root(problem, prev, here.theta, root))
+      return Scan::wrinkled;
     prev = here;
-    theta_prev = th;
     have_prev = true;
   }
   return any_tension || evaluated == 0 ? Scan::undecided : Scan::slack;
@@ -323,9 +323,17 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   if (!converged) {
     const double beta0 =
         std::max(0.0, 1.0 / std::sqrt(stretches.eigenvalues()(1)) - stretches.eigenvalues()(0));
-    const Scan found = scan_wrinkle_direction(material, C2, point, history_old, history_new, taut,
-                                              beta0, theta, beta, s);
+    const WrinkleProblem problem{material, C2, point, history_old, history_new};
+    WrinkleAt start, root;
+    start.beta = beta0;
+    start.s = taut;
+    const Scan found = scan_wrinkle_direction(problem, start, root);
     converged = found == Scan::wrinkled;
+    if (converged) {
+      theta = root.theta;
+      beta = root.beta;
+      s = root.s;
+    }
     scanned_slack =
         found == Scan::slack ||
         (found == Scan::undecided &&
