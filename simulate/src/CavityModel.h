@@ -60,6 +60,10 @@ struct StepResult {
 struct StepRules {
   int max_cutbacks = 12;         // halvings of a failed timed step before the run fails
   int max_settle_cutbacks = 12;  // the same for the steps to the start volume
+  // A failed voiding step is not cut back below this (s): the detrusor's Hill rate makes
+  // the wall a dashpot of stiffness ∝ 1/Δt, so much shorter steps are harder, not easier,
+  // and a run used to grind on at nanosecond steps (docs/physics.md §3.7). 0: no floor.
+  double min_cut_void_step_s = 1e-3;
   // Filling and holding steps: 0 = adaptive (from half of RunOptions::max_fill_step_ml's
   // time, growing 1.5x after a step of at most 6 iterations), else this fixed step (s).
   double fixed_fill_step_s = 0.0;

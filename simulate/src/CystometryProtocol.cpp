@@ -186,7 +186,8 @@ void CystometryProtocol::step_to_volume(double V) {
 
 StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
   std::string failure;
-  for (int cut = 0; cut <= rules_.max_cutbacks; ++cut, dt *= 0.5) {
+  int cut = 0;
+  for (;; ++cut, dt *= 0.5) {
     StepRequest step;
     step.dt_s = dt;
     step.end_time_s = time_ + dt;
@@ -204,8 +205,14 @@ StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
       return r;
     }
     failure = r.failure;
+    if (cut == rules_.max_cutbacks) break;
+    // While voiding, a step at the shortest cut-back step fails at once.
+    if (voiding_ && dt < 2.0 * rules_.min_cut_void_step_s) {
+      failure += ", at the shortest voiding step";
+      break;
+    }
   }
-  throw StepFailed(failure + " after " + std::to_string(rules_.max_cutbacks) + " step cut-backs");
+  throw StepFailed(failure + " after " + std::to_string(cut) + " step cut-backs");
 }
 
 void CystometryProtocol::fill() {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "WallSurroundings.h"
+#include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
 
 namespace vesica::simulate {
@@ -71,6 +72,7 @@ bool HydrostaticCavity::attempt(double dt, const ProtocolLoads& loads, const Ure
     };
   const NewtonReport report = solver_.solve(cavity, loads_, x_);
   iterations = report.iterations;
+  log_step(dt, loads, report);
   if (!report.converged) {
     x_ = x_saved;
     loads_.inside.p0 = p_saved;
@@ -89,6 +91,23 @@ bool HydrostaticCavity::attempt(double dt, const ProtocolLoads& loads, const Ure
   q_out_ = q_new;
   volume_ = solver_.assembly().volume;
   return true;
+}
+
+// One debug line per attempt (docs/simulate.md, "Step log"): where the step went and how
+// the wall's elements stood at its last evaluation.
+void HydrostaticCavity::log_step(double dt, const ProtocolLoads& loads,
+                                 const NewtonReport& report) const {
+  const auto log = vesica::log();
+  if (!log->should_log(spdlog::level::debug)) return;
+  const std::array<int, 3> states = problem_.wrinkling_counts();
+  const std::vector<double>& r = report.residual_norms;
+  log->debug(
+      "level 1 step: dt = {:.4g} s, V = {:.5g} ml, Pves = {:.5g} cmH2O, activation = {:.3f}, "
+      "elements taut/wrinkled/slack = {}/{}/{}, {} iterations, |r|/|f| {:.2e} -> {:.2e}: {}",
+      dt, units::ml_from_m3(solver_.assembly().volume), units::cmh2o_from_pa(loads_.inside.p0),
+      loads.activation, states[0], states[1], states[2], report.iterations,
+      r.empty() ? 0.0 : r.front(), r.empty() ? 0.0 : r.back(),
+      report.converged ? "converged" : report.failure);
 }
 
 // Newton starts from the last state moved on at the last step's velocity (wall and

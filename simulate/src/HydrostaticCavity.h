@@ -67,6 +67,7 @@ class HydrostaticCavity final : public CavityModel {
   bool attempt(double dt, const ProtocolLoads& loads, const UrethraLaw* urethra,
                double V_target_no_flow, int& iterations, double& voided);
   void predict(double dt);
+  void log_step(double dt, const ProtocolLoads& loads, const NewtonReport& report) const;
   void set_loads(const ProtocolLoads& loads);
   StepResult accepted(int iterations, double voided);
   StepResult failed(int iterations);

@@ -63,6 +63,7 @@ MembraneProblem::MembraneProblem(const WallModel& wall, const Material& material
   history_new_ = history_old_;
   J2_old_.assign(ne, 1.0);
   J2_new_ = J2_old_;
+  wrinkling_.assign(ne, Wrinkling::taut);
   element_K_.resize(ne);
   element_f_.resize(ne);
   element_fp_.resize(ne);
@@ -166,6 +167,7 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     const MembraneResponse m = membrane_response(geometry_[e], xe, material_, point, J2_new_[e],
                                                  h_old, h_new, tension_field_);
     self->J2_new_[e] = m.stress.J2;
+    self->wrinkling_[e] = m.stress.wrinkling;
     const PressureResponse p = pressure_response(xe, loads.inside, loads.outside);
     self->element_f_[e] = m.f_int;
     self->element_fp_[e] = p.f;
@@ -229,6 +231,12 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
       for (int i = 0; i < 3; ++i)
         if (dof_[3 * n + i] >= 0) values[diagonal_slot_[dof_[3 * n + i]]] += k;
     });
+}
+
+std::array<int, 3> MembraneProblem::wrinkling_counts() const {
+  std::array<int, 3> counts{0, 0, 0};
+  for (const Wrinkling w : wrinkling_) ++counts[static_cast<int>(w)];
+  return counts;
 }
 
 void MembraneProblem::commit() {

@@ -4,6 +4,7 @@
 // removed. Assembles the residual r = f_int - f_ext over the free degrees of freedom,
 // its tangent K = ∂r/∂u (sparse, pattern built once and reused), ∂r/∂p0 and the volume
 // gradient ∂V/∂u for the bordered cavity system (docs/physics.md §4).
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -67,6 +68,10 @@ class MembraneProblem {
   void set_tension_field(bool on) { tension_field_ = on; }
   bool tension_field() const { return tension_field_; }
 
+  // How many elements the last assemble() found taut, wrinkled and slack (TensionField.h):
+  // the step log of a cystometry (docs/simulate.md, "Step log").
+  std::array<int, 3> wrinkling_counts() const;
+
   // Accepts the state of the last assemble() as converged (history, thickness guesses).
   void commit();
   // Takes over the committed state (history, thickness guesses) of another problem on the
@@ -108,8 +113,9 @@ class MembraneProblem {
   // Squared volume ratio per element: committed, and of the last evaluation (the guess of
   // the next plane-stress iteration, PlaneStress.h).
   std::vector<double> J2_old_, J2_new_;
-  std::vector<double> node_area_;  // reference tributary area per node (m²)
-  std::vector<double> node_mass_;  // wall mass per node (kg / (kg/m³)): H A0 / 3 sums
+  std::vector<Wrinkling> wrinkling_;  // per element, of the last evaluation
+  std::vector<double> node_area_;     // reference tributary area per node (m²)
+  std::vector<double> node_mass_;     // wall mass per node (kg / (kg/m³)): H A0 / 3 sums
   // Per element: its 9x9 block (membrane - pressure) and where each entry goes in K.
   std::vector<Matrix9> element_K_;
   std::vector<Vector9> element_f_;

@@ -140,6 +140,125 @@ bool solve_wrinkle_width_jointly(const Material& material, const Eigen::Matrix2d
   return false;
 }
 
+// The wrinkle equations along a fixed direction θ: β(θ) from r1 = 0 (bracketed), and then
+// r2 and the tension tᵀ S t. False when no width solves r1 = 0.
+struct WrinkleAt {
+  double theta = 0.0, beta = 0.0, r2 = 0.0, tension = 0.0;
+  PlaneStressState s;
+};
+struct WrinkleProblem {
+  const Material& material;
+  const Eigen::Matrix2d& C2;
+  const MaterialPoint& point;
+  const double* history_old;
+  double* history_new;
+
+  // From the width and thickness of `from`.
+  bool at(double theta, const WrinkleAt& from, WrinkleAt& out) const {
+    const WrinkleFrame w(theta);
+    out.theta = theta;
+    out.beta = from.beta;
+    out.s = from.s;
+    if (!solve_wrinkle_width(material, C2, point, history_old, history_new, w, out.beta, out.s))
+      return false;
+    out.r2 = w.t.dot(out.s.S * w.m);
+    out.tension = w.t.dot(out.s.S * w.t);
+    return true;
+  }
+};
+
+// Bisects r2(θ) between two directions of opposite r2; true with the root in `root` when it
+// carries tension.
+bool bisect_wrinkle_root(const WrinkleProblem& problem, WrinkleAt lo, double theta_hi,
+                         WrinkleAt& root) {
+  double hi = theta_hi;
+  for (int it = 0; it < 200; ++it) {
+    if (!problem.at(0.5 * (lo.theta + hi), lo, root)) return false;
+    if (std::abs(root.r2) <= round_off_stress(root.s) || hi - lo.theta < 1e-14)
+      return root.tension > 0.0;
+    if ((root.r2 > 0.0) == (lo.r2 > 0.0))
+      lo = root;
+    else
+      hi = root.theta;
+  }
+  return false;
+}
+
+// What the global search of the wrinkle direction found (scan_wrinkle_direction).
+enum class Scan { wrinkled, slack, undecided };
+
+// Where Newton on θ finds no root (r2 keeps its sign over its clamped steps: an anisotropic
+// wall whose active fibers pull against a compressive viscous overstress), a root of r2(θ)
+// with tension is searched globally: r2 is sampled over half a turn from the start state
+// (width, thickness), and a sign change with positive tension is bisected (wrinkled: root
+// set, the history written at it). Slack when no sampled direction carries tension;
+// undecided when some do but no root was found.
+Scan scan_wrinkle_direction(const WrinkleProblem& problem, const WrinkleAt& start,
+                            WrinkleAt& root) {
+  constexpr int kSamples = 36;
+  const double pi = std::acos(-1.0);
+  WrinkleAt prev = start, here = start;
+  bool have_prev = false, any_tension = false;
+  int evaluated = 0;
+  for (int k = 0; k <= kSamples; ++k) {
+    if (!problem.at(pi * k / kSamples, start, here)) {
+      have_prev = false;
+      continue;
+    }
+    ++evaluated;
+    any_tension = any_tension || here.tension > 0.0;
+    const bool sign_change = have_prev && (prev.r2 > 0.0) != (here.r2 > 0.0);
+    if (sign_change && (prev.tension > 0.0 || here.tension > 0.0) &&
+        bisect_wrinkle_root(problem, prev, here.theta, root))
+      return Scan::wrinkled;
+    prev = here;
+    have_prev = true;
+  }
+  return any_tension || evaluated == 0 ? Scan::undecided : Scan::slack;
+}
+
+// The element's natural in-plane metric under its present history and activation: the C*
+// with S(C*) = 0, by Newton on the three components of C* from the start C (bisecting a
+// step that leaves C* positive definite). With active and viscous stresses the natural
+// state is not the reference: a muscle pulling harder than the wall's viscous overstress
+// resists is shorter than it, and then wider. False when no such state is found.
+bool natural_metric(const Material& material, const MaterialPoint& point, const double* history_old,
+                    double* history_new, double J2, Eigen::Matrix2d& C_star) {
+  for (int it = 0; it < 60; ++it) {
+    const PlaneStressState s = plane_stress(material, C_star, point, J2, history_old, history_new);
+    J2 = s.J2;
+    const Eigen::Vector3d S(s.S(0, 0), s.S(1, 1), s.S(0, 1));
+    if (S.norm() <= round_off_stress(s)) return true;
+    // Voigt strains (E11, E22, 2 E12); C = I + 2E.
+    const Eigen::Vector3d dE = s.D.partialPivLu().solve(-S);
+    if (!dE.allFinite()) return false;
+    Eigen::Matrix2d dC;
+    dC << 2.0 * dE(0), dE(2), dE(2), 2.0 * dE(1);
+    double fraction = 1.0;
+    while (fraction > 1e-6 && (C_star + fraction * dC).determinant() <= 0.0) fraction *= 0.5;
+    if ((C_star + fraction * dC).determinant() <= 0.0 || (C_star + fraction * dC)(0, 0) <= 0.0)
+      return false;
+    if ((fraction * dC).norm() <= 1e-15 * C_star.norm()) return true;
+    C_star += fraction * dC;
+  }
+  return false;
+}
+
+// Slack: the element can relax to its natural state (natural_metric) by lengthening alone,
+// C* - C positive semidefinite: then no direction of it is stretched, and it carries
+// nothing. The rigorous test where the wrinkle iteration finds no root (the element's
+// tension is negative in every direction it tries): the isotropic shortcut of
+// tension_field_stress is this test for a law whose natural state is C = I.
+bool slack_by_natural_state(const Material& material, const Eigen::Matrix2d& C2,
+                            const MaterialPoint& point, const double* history_old,
+                            double* history_new, double J2) {
+  Eigen::Matrix2d C_star = C2;
+  if (!natural_metric(material, point, history_old, history_new, J2, C_star)) return false;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> excess;
+  excess.computeDirect(C_star - C2, Eigen::EigenvaluesOnly);
+  return excess.eigenvalues()(0) >= -1e-12 * C2.norm();
+}
+
 }  // namespace
 
 PlaneStressState tension_field_stress(const Material& material, const Eigen::Matrix2d& C2,
@@ -200,10 +319,31 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
     const double slope = Jz(1, 1) - Jz(1, 0) * Jz(0, 1) / Jz(0, 0);
     theta += std::clamp(-r2 / slope, -0.2, 0.2);
   }
-  if (!converged) throw std::runtime_error("tension field: wrinkle iteration did not converge");
-
+  bool scanned_slack = false;
+  if (!converged) {
+    const double beta0 =
+        std::max(0.0, 1.0 / std::sqrt(stretches.eigenvalues()(1)) - stretches.eigenvalues()(0));
+    const WrinkleProblem problem{material, C2, point, history_old, history_new};
+    WrinkleAt start, root;
+    start.beta = beta0;
+    start.s = taut;
+    const Scan found = scan_wrinkle_direction(problem, start, root);
+    converged = found == Scan::wrinkled;
+    if (converged) {
+      theta = root.theta;
+      beta = root.beta;
+      s = root.s;
+    }
+    scanned_slack =
+        found == Scan::slack ||
+        (found == Scan::undecided &&
+         slack_by_natural_state(material, C2, point, history_old, history_new, taut.J2));
+  }
   const WrinkleFrame w(theta);
-  if (!(beta > 0.0) || w.t.dot(s.S * w.t) <= 0.0) {
+  const bool slack = scanned_slack || (converged && (!(beta > 0.0) || w.t.dot(s.S * w.t) <= 0.0));
+  if (!converged && !slack)
+    throw std::runtime_error("tension field: wrinkle iteration did not converge");
+  if (slack) {
     // Slack: no tension in any direction. The history is that of C, the state it was
     // evaluated in by every other part (output, commit).
     return slack_state(history_new != nullptr

@@ -154,6 +154,31 @@ TEST(Physiology, DefaultDetrusorVoidsTheCtBladderWithNormalFlowAndResidual) {
   EXPECT_LT(r.rows[last].flow, 0.1 * qmax);
 }
 
+// Issue 24: the recording voids 350 of 349 ml, so the model must empty below the wall's
+// stress-free volume, where only the detrusor's active stress keeps the wall taut. The
+// default run gets there without a failed voiding step (no note ends its voiding), with
+// V = V0 + infused - voided on every row and Pves never below Pabd while the detrusor is
+// active (an active wall can only push).
+TEST(Physiology, TheDetrusorEmptiesTheRealBladderBelowItsStressFreeVolume) {
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const SimulateRun& r = default_run();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(r.summary["completed"].get<bool>());
+  EXPECT_FALSE(r.summary.contains("notes")) << r.summary["notes"];
+  const double stress_free = r.summary["reference_volume_ml"].get<double>();
+  EXPECT_NEAR(stress_free, 20.0, 1e-6);  // the default residual volume (docs/physics.md §7.2)
+  ASSERT_FALSE(r.rows.empty());
+  EXPECT_LT(r.rows.back().volume, stress_free);
+  EXPECT_LT(r.summary["mass_balance_error_max_rel"].get<double>(), 1e-6);
+  const double start = r.rows.front().volume;
+  for (const HistoryCsvRow& row : r.rows) {
+    EXPECT_NEAR(row.volume, start + row.infused - row.voided, 1e-6 * row.volume) << "t = " << row.t;
+    if (row.voided > 0.0) {
+      EXPECT_GE(row.pves, row.pabd) << "t = " << row.t;
+    }
+  }
+}
+
 TEST(Physiology, WeakerDetrusorEmptiesLessAndFlowsSlower) {
   VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
   // The default contractility is 100 kPa (docs/simulate.md).

@@ -17,7 +17,9 @@
 //    ends voiding with a note and the drive "none";
 //  - steps longer than the model can take are halved (each step asks the fixed step, or
 //    what is left of the phase), and a run whose cut-backs are
-//    exhausted stops with the history so far and one line naming time and volume.
+//    exhausted stops with the history so far and one line naming time and volume;
+//  - a voiding step is halved no further than below 2 ms (StepRules::min_cut_void_step_s,
+//    1 ms): from 0.1 s that is 0.1/2^6 = 1.5625 ms, the seventh attempt.
 // Mass balance V = V_start + infused − voided holds on every row.
 #include <gtest/gtest.h>
 
@@ -42,6 +44,7 @@ struct LumpedOptions {
   double reference_ml = 50.0;
   double compliance_ml_per_cmh2o = 10.0;
   double longest_step_s = 1e9;  // steps longer than this do not converge
+  double fails_after_s = 1e9;   // steps ending later than this do not converge
   int max_cutbacks = 12;
 };
 
@@ -75,6 +78,11 @@ class LumpedBladder final : public CavityModel {
     if (step.dt_s > o_.longest_step_s) {
       StepResult r;
       r.failure = "step too long for the lumped bladder";
+      return r;
+    }
+    if (step.end_time_s > o_.fails_after_s) {
+      StepResult r;
+      r.failure = "no equilibrium after the lumped bladder's last moment";
       return r;
     }
     // Backward Euler: V = V_base − Δt Q(P(V)), V_base the protocol's volume with the
@@ -355,4 +363,25 @@ TEST(Protocol, ExhaustedCutBacksEndTheRunWithTheHistorySoFar) {
             "step cut-backs");
   EXPECT_EQ(r.summary["failure"], r.failure);
   EXPECT_FALSE(r.summary["completed"].get<bool>());
+}
+
+TEST(Protocol, AVoidingStepThatCannotConvergeFailsFastInOneLine) {
+  ProtocolSettings p = lumped_protocol();
+  LumpedOptions lumped;
+  lumped.fails_after_s = 105.0 + 1e-9;  // 100 s of filling, 5 s of hold: voiding fails
+  LumpedBladder model(lumped);
+  const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+  EXPECT_FALSE(r.completed);
+  // Every voiding attempt starts at t = 105 s: 0.1 s, then six halvings down to 1.5625 ms,
+  // not the twelve of a filling step.
+  std::vector<double> voiding;
+  for (const StepRequest& q : model.requests())
+    if (q.end_time_s > 105.0 + 1e-9) voiding.push_back(q.dt_s);
+  ASSERT_EQ(voiding.size(), 7u);
+  EXPECT_NEAR(voiding.front(), 0.1, 1e-15);
+  EXPECT_NEAR(voiding.back(), 0.1 / 64.0, 1e-15);
+  EXPECT_EQ(r.failure,
+            "step failed at t = 105 s, V = 150 ml: no equilibrium after the lumped bladder's last "
+            "moment, at the shortest voiding step after 6 step cut-backs");
+  EXPECT_EQ(r.failure.find('\n'), std::string::npos);
 }

@@ -113,6 +113,7 @@ NavierStokesCavity::~NavierStokesCavity() = default;
 StepRules NavierStokesCavity::rules() const {
   StepRules r;
   r.max_cutbacks = kMaxCutbacks;
+  r.min_cut_void_step_s = 0.0;  // its own few cut-backs bound the work (no Hill dashpot issue)
   r.fixed_fill_step_s = options_.level2.fill_dt_s;
   r.fixed_void_step_s = options_.level2.void_dt_s;
   r.min_void_step_s = options_.level2.void_dt_min_s;
