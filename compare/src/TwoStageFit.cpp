@@ -57,6 +57,8 @@ std::vector<Eigen::VectorXd> start_points(const std::vector<FitParameter>& param
 }
 
 constexpr std::size_t kModelCandidates = 2;
+// The note of a parameter when no run of the model reached the end of the data.
+constexpr const char* kNotFitted = "not fitted";
 
 struct Candidate {
   Eigen::VectorXd u;
@@ -240,8 +242,11 @@ void fill_parameters(const std::vector<FitParameter>& params, const std::vector<
     f.identifiable = u[j].identifiable;
     f.note = u[j].reason;
     r.parameters.push_back(f);
-    if (!f.identifiable)
-      r.notes.push_back(f.name + " is not identifiable from these data: " + f.note);
+    if (f.identifiable) continue;
+    // A parameter no run could assess is not fitted, which says nothing about the data.
+    r.notes.push_back(f.note == kNotFitted
+                          ? f.name + " was not fitted"
+                          : f.name + " is not identifiable from these data: " + f.note);
   }
 }
 
@@ -320,7 +325,7 @@ void all_failed(const FitProblem& pb, const FitObjective& model, const FitObject
                        " runs stopped before the end of the data; nothing was fitted";
   std::vector<double> start;
   for (const auto& p : pb.parameters) start.push_back(p.initial);
-  fill_parameters(pb.parameters, start, undetermined(pb.parameters, "not fitted"), r);
+  fill_parameters(pb.parameters, start, undetermined(pb.parameters, kNotFitted), r);
   for (const auto& f : model.failure_summary()) r.notes.push_back(pb.model_name + ": " + f);
   if (surrogate)
     for (const auto& f : surrogate->failure_summary())
