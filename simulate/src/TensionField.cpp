@@ -119,6 +119,7 @@ bool solve_wrinkle_width_jointly(const Material& material, const Eigen::Matrix2d
     C.topLeftCorner<2, 2>() = Cb;
     C(2, 2) = c33;
     material.evaluate(C, point, history_old, history_new, S, D);
+    material.add_membrane_overstress(C, point, history_old, history_new, S, D);
     const PlaneStressState state = condensed_state(S, D, c33, det2);
     const double r1 = w.m.dot(state.S * w.m), r33 = S(2, 2);
     const Vector6 dS_dbeta = D * dE_dbeta, dS_dc33 = 0.5 * D.col(2);
@@ -286,7 +287,11 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   // direction is wider than its natural width. A compressive principal stress there is the
   // law's own softening (the Ogden volumetric term of a dilating wall with K/μ ≈ 5, past
   // its pressure peak), and relaxing it would soften the wall further: the plain law stays.
-  if (stretches.eigenvalues()(0) >= 1.0) return taut;
+  // Not for a viscous wall, whose stress-free state follows its history: unloaded faster
+  // than it relaxes (voiding), it is wider than that state while still stretched beyond its
+  // reference, and its compressive overstress is what wrinkling takes away (a membrane that
+  // kept it would push on the urine).
+  if (stretches.eigenvalues()(0) >= 1.0 && !material.viscous()) return taut;
   if (isotropic_elastic && stretches.eigenvalues()(1) <= 1.0)
     return slack_state(taut);  // shortened in every direction: no wrinkle carries tension
 

@@ -45,12 +45,25 @@ class Material {
   // without solving for its wrinkles.
   virtual bool isotropic_elastic() const { return false; }
 
+  // True for a law with a viscous overstress (add_membrane_overstress): its stress-free
+  // state follows its history, so a sheet stretched beyond its reference in every
+  // direction may still be wider than that state and wrinkle (TensionField.h).
+  virtual bool viscous() const { return false; }
+
   // C: right Cauchy-Green tensor (3x3, symmetric). history_old: committed state of the
   // point (history_size() doubles), history_new: written with the state that belongs to
   // this C. Outputs: S second Piola-Kirchhoff stress (Pa) and D = 2 dS/dC (Pa, Voigt).
   virtual void evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point,
                         const double* history_old, double* history_new, Eigen::Matrix3d& S,
                         Voigt6& D) const = 0;
+
+  // The wall's viscous overstress, a membrane quantity (docs/physics.md §2.5): called by the
+  // plane-stress solve (PlaneStress.h) on its 3-D evaluation S, D at C = [C_αβ 0; 0 C33].
+  // Adds an overstress with in-plane components only to S, and its derivative to the
+  // in-plane rows of D, and writes its history. Nothing for a law without one.
+  virtual void add_membrane_overstress(const Eigen::Matrix3d& /*C*/, const MaterialPoint& /*point*/,
+                                       const double* /*history_old*/, double* /*history_new*/,
+                                       Eigen::Matrix3d& /*S*/, Voigt6& /*D*/) const {}
 };
 
 // A material chosen by name with its parameters, as written in the pipeline file
