@@ -196,3 +196,88 @@ TEST(TensionField, ElementTangentMatchesFiniteDifferences) {
   EXPECT_GT(counted[1], 30);
   EXPECT_GT(counted[2], 10);
 }
+
+namespace {
+
+// The history of a viscous sheet held long at stretch λ_held in every direction (relaxed),
+// then the state at C unloaded to at once (Δt = 0): its overstress is β (S∞(C) − S∞(held)).
+PlaneStressState unloaded_at_once(const Material& m, double l_held, const Eigen::Matrix2d& C,
+                                  bool tension_field) {
+  std::vector<double> h0(m.history_size(), 0.0), h1(h0.size()), h2(h0.size());
+  MaterialPoint point;
+  point.dt_s = kRelaxedStep;
+  plane_stress(m, l_held * l_held * Eigen::Matrix2d::Identity(), point, 1.0, h0.data(), h1.data());
+  point.dt_s = 0.0;
+  return tension_field ? tension_field_stress(m, C, point, 1.0, h1.data(), h2.data())
+                       : plane_stress(m, C, point, 1.0, h1.data(), h2.data());
+}
+
+}  // namespace
+
+// A viscous wall unloaded faster than it relaxes (a voiding bladder): still stretched beyond
+// its reference in every direction, its plain law is in compression — the overstress of a
+// branch that remembers the larger stretch. Incompressible neo-Hookean, equibiaxial:
+// S∞(λ) = μ (1 − λ⁻⁶), so from λ = 2 to 1.05 with β = 1 the plain stress is
+// (1 + β) S∞(1.05) − β S∞(2) ≈ −0.48 μ in every direction. A membrane cannot push: the
+// sheet is slack. Pulled to 1.2 along one direction it wrinkles across it and carries only
+// tension.
+TEST(TensionField, UnloadedViscousSheetCarriesNoCompression) {
+  const double mu = 5e3;
+  const auto m =
+      make_material({"maxwell", {{"mu", mu}, {"K", 1e3 * mu}, {"beta", 1.0}, {"tau", 10.0}}});
+  const double l = 1.05;
+  const Eigen::Matrix2d C = l * l * Eigen::Matrix2d::Identity();
+  const double S_inf = [](double x) { return 1.0 - std::pow(x, -6); }(l);
+  const double expected_plain = mu * (2.0 * S_inf - (1.0 - std::pow(2.0, -6)));
+  const auto plain = unloaded_at_once(*m, 2.0, C, false);
+  EXPECT_NEAR(plain.S(0, 0), expected_plain, 2e-3 * mu);
+  EXPECT_LT(plain.S(0, 0), -0.4 * mu);
+  const auto tf = unloaded_at_once(*m, 2.0, C, true);
+  EXPECT_EQ(tf.wrinkling, Wrinkling::slack);
+  EXPECT_EQ(tf.S.norm(), 0.0);
+
+  const auto pulled = unloaded_at_once(*m, 2.0, stretched(1.2, l, 0.3), true);
+  ASSERT_EQ(pulled.wrinkling, Wrinkling::wrinkled);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> principal(pulled.S);
+  EXPECT_NEAR(principal.eigenvalues()(0), 0.0, 1e-9 * mu);
+  EXPECT_GT(principal.eigenvalues()(1), 0.0);
+}
+
+// The viscous default wall, contracting: the membrane tangent (elastic, branch and muscle)
+// is the derivative of the membrane stress, taut and wrinkled, and it is symmetric — the
+// wall keeps the symmetric LDLᵀ solver.
+TEST(TensionField, ViscousMembraneTangentIsConsistentAndSymmetric) {
+  const auto m = make_material({"bladder", {{"contractility", 20e3}}});
+  MaterialPoint point;
+  point.dt_s = 0.5;
+  point.activation = 0.6;
+  point.fibers = {Eigen::Vector3d(0.8, 0.6, 0.0), Eigen::Vector3d(-0.6, 0.8, 0.0)};
+  std::vector<double> h_old(m->history_size()), h_new(h_old.size());
+  for (std::size_t i = 0; i < h_old.size(); ++i) h_old[i] = 30.0 * std::sin(double(i));
+  h_old[h_old.size() - 4] = h_old[h_old.size() - 2] = 0.4;   // fibers' committed stretch - 1
+  h_old[h_old.size() - 3] = h_old[h_old.size() - 1] = -0.2;  // Hill factor - 1
+  int wrinkled = 0;
+  for (const Eigen::Matrix2d& C0 : {stretched(1.5, 1.3, 0.4), stretched(1.4, 0.6, -0.9)}) {
+    auto at = [&](const Eigen::Matrix2d& C) {
+      return tension_field_stress(*m, C, point, 1.0, h_old.data(), h_new.data());
+    };
+    const auto s = at(C0);
+    wrinkled += s.wrinkling == Wrinkling::wrinkled;
+    Eigen::Matrix3d fd;
+    const double h = 1e-7;
+    for (int j = 0; j < 3; ++j) {
+      Eigen::Matrix2d dC = Eigen::Matrix2d::Zero();
+      if (j < 2)
+        dC(j, j) = 2.0 * h;
+      else
+        dC(0, 1) = dC(1, 0) = h;
+      const Eigen::Matrix2d dS = (at(C0 + dC).S - at(C0 - dC).S) / (2.0 * h);
+      fd.col(j) << dS(0, 0), dS(1, 1), dS(0, 1);
+    }
+    EXPECT_LT((fd - s.D).norm(), 1e-5 * s.D.norm()) << int(s.wrinkling) << "\n"
+                                                    << fd << "\n\n"
+                                                    << s.D;
+    EXPECT_LT((s.D - s.D.transpose()).norm(), 1e-12 * s.D.norm()) << int(s.wrinkling);
+  }
+  EXPECT_EQ(wrinkled, 1);
+}
