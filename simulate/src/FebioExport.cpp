@@ -71,8 +71,8 @@ std::string elastic_law(const MaterialSpec& m, const std::string& tag, const std
 
 // vesica's Maxwell branches (β_α, τ_α) become FEBio's uncoupled viscoelastic g_α, t_α:
 // the same kernel, but FEBio relaxes the 3-D isochoric stress where vesica relaxes the
-// membrane stress at plane stress (docs/physics.md §2.5), so the two agree for a held
-// stretch of a taut wall, not for a fast unloading.
+// membrane stress at plane stress (docs/physics.md §2.5): they differ most where the
+// wall's thickness changes fast (voiding).
 std::vector<std::pair<double, double>> maxwell_branches(const MaterialSpec& m) {
   std::vector<std::pair<double, double>> b;
   if (m.params.count("beta") || m.params.count("tau"))
