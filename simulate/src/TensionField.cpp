@@ -287,11 +287,7 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   // direction is wider than its natural width. A compressive principal stress there is the
   // law's own softening (the Ogden volumetric term of a dilating wall with K/μ ≈ 5, past
   // its pressure peak), and relaxing it would soften the wall further: the plain law stays.
-  // Not for a viscous wall, whose stress-free state follows its history: unloaded faster
-  // than it relaxes (voiding), it is wider than that state while still stretched beyond its
-  // reference, and its compressive overstress is what wrinkling takes away (a membrane that
-  // kept it would push on the urine).
-  if (stretches.eigenvalues()(0) >= 1.0 && !material.viscous()) return taut;
+  if (stretches.eigenvalues()(0) >= 1.0) return taut;
   if (isotropic_elastic && stretches.eigenvalues()(1) <= 1.0)
     return slack_state(taut);  // shortened in every direction: no wrinkle carries tension
 

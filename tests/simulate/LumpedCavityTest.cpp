@@ -204,37 +204,3 @@ TEST(LumpedCavity, RecordedStrainingWhileVoidingAddsToPvesNotToPdet) {
   EXPECT_EQ(d.summary["voiding_drive"], "detrusor");
   EXPECT_GT(d.summary["voided_ml"].get<double>(), 10.0);
 }
-
-// A voiding bladder never sucks: a membrane cannot push its urine, so Pdet (the wall's own
-// pressure) stays ≥ 0 throughout voiding, here with the default wall's viscous branch
-// unloading fast while the detrusor empties it and the patient's recorded straining
-// replayed (docs/physics.md §2.5, §1.5). The figures are a calibrated patient's.
-TEST(LumpedCavity, AVoidingBladderNeverSucks) {
-  const WallModel wall = reference_sphere(20.0, 3e-3);
-  ProtocolSettings p;
-  p.gravity = false;
-  p.pabd_cmh2o = 9.0;
-  p.start_ml = 50.0;
-  p.capacity_ml = 349.0;
-  p.fill_rate_ml_min = 57.0;
-  p.voiding_pabd = {{0, 6, 20, 23, 25, 29, 31, 34, 36, 39, 42, 45, 49, 54, 59},
-                    {9, 10, 20, 21, 23, 16, 16, 15, 20, 19, 13, 10, 11, 9, 9}};
-  p.r1_cmh2o_s_per_ml = 0.779;
-  p.r2_cmh2o_s2_per_ml2 = 1e-5;
-  p.activation_onset_s = 37.2;
-  const MaterialSpec bladder{"bladder", {{"mu", 1140.0}, {"k1", 47.3}, {"contractility", 34.5e3}}};
-  const CystometryResult r = run_cystometry(wall, bladder, p, level0());
-  ASSERT_TRUE(r.completed) << r.failure;
-  double t_void = INFINITY, min_pdet = INFINITY, last_ml = NAN;
-  for (const HistoryRow& row : r.history) {
-    if (row.volume_ml >= p.capacity_ml - 1e-9) t_void = std::min(t_void, row.time_s);
-    if (row.time_s > t_void) {
-      min_pdet = std::min(min_pdet, row.pdet_cmh2o);
-      last_ml = row.volume_ml;
-    }
-  }
-  std::cout << "[ voiding ] min Pdet " << min_pdet << " cmH2O, end volume " << last_ml << " ml"
-            << std::endl;
-  ASSERT_TRUE(std::isfinite(min_pdet));
-  EXPECT_GE(min_pdet, -1e-9);
-}

@@ -25,7 +25,6 @@ class DecoupledMaxwell : public Material {
   bool isotropic_elastic() const override {
     return branches_.empty() && isochoric_->isotropic() && !muscle_;
   }
-  bool viscous() const override { return !branches_.empty(); }
   void evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point, const double* history_old,
                 double* history_new, Eigen::Matrix3d& S, Voigt6& D) const override;
   void add_membrane_overstress(const Eigen::Matrix3d& C, const MaterialPoint& point,

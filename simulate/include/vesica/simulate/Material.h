@@ -45,11 +45,6 @@ class Material {
   // without solving for its wrinkles.
   virtual bool isotropic_elastic() const { return false; }
 
-  // True for a law with a viscous overstress (add_membrane_overstress): its stress-free
-  // state follows its history, so a sheet stretched beyond its reference in every
-  // direction may still be wider than that state and wrinkle (TensionField.h).
-  virtual bool viscous() const { return false; }
-
   // C: right Cauchy-Green tensor (3x3, symmetric). history_old: committed state of the
   // point (history_size() doubles), history_new: written with the state that belongs to
   // this C. Outputs: S second Piola-Kirchhoff stress (Pa) and D = 2 dS/dC (Pa, Voigt).
