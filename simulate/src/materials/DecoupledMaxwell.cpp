@@ -28,7 +28,7 @@ DecoupledMaxwell::DecoupledMaxwell(OgdenVolumetric volumetric,
     : volumetric_(volumetric),
       isochoric_(std::move(isochoric)),
       branches_(std::move(branches)),
-      muscle_(std::move(muscle)) {
+      muscle_(muscle) {
   // S∞ of the last committed state, then Q of each branch (in-plane Voigt 11, 22, 12).
   muscle_offset_ = branches_.empty() ? 0 : 3 * (1 + branches_.size());
 }
