@@ -69,8 +69,10 @@ std::string elastic_law(const MaterialSpec& m, const std::string& tag, const std
   return x.str();
 }
 
-// vesica's Maxwell branches (β_α, τ_α) on the isochoric stress are FEBio's uncoupled
-// viscoelastic g_α, t_α: both relax the elastic isochoric stress with the same kernel.
+// vesica's Maxwell branches (β_α, τ_α) become FEBio's uncoupled viscoelastic g_α, t_α:
+// the same kernel, but FEBio relaxes the 3-D isochoric stress where vesica relaxes the
+// membrane stress at plane stress (docs/physics.md §2.5): they differ most where the
+// wall's thickness changes fast (voiding).
 std::vector<std::pair<double, double>> maxwell_branches(const MaterialSpec& m) {
   std::vector<std::pair<double, double>> b;
   if (m.params.count("beta") || m.params.count("tau"))

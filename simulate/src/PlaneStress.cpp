@@ -67,6 +67,8 @@ PlaneStressState plane_stress(const Material& material, const Eigen::Matrix2d& C
     }
     if (!done) throw std::runtime_error("plane stress: thickness iteration did not converge");
   }
+  // In-plane only, so it leaves the thickness solved above as it is (docs/physics.md §2.5).
+  material.add_membrane_overstress(C, point, history_old, history_new, S, D);
   return condensed_state(S, D, c33, det2);
 }
 

@@ -2,7 +2,9 @@
 // Plane stress for any 3-D law S(C) (docs/physics.md §1): the wall is free through its
 // thickness, S33 = 0. In the element's reference frame C = [C_αβ 0; 0 C33]; C33 (the
 // squared thickness stretch) is found by a local Newton iteration on S33(C33) = 0, and
-// the tangent is condensed to the plane, 𝔻_mem = A - B D⁻¹ Bᵀ.
+// the tangent is condensed to the plane, 𝔻_mem = A - B D⁻¹ Bᵀ. The material's membrane
+// overstress (its viscous branches, Material::add_membrane_overstress) is added at the
+// root: it has no thickness component.
 #include <Eigen/Dense>
 
 #include "vesica/simulate/Material.h"

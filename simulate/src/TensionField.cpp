@@ -119,6 +119,7 @@ bool solve_wrinkle_width_jointly(const Material& material, const Eigen::Matrix2d
     C.topLeftCorner<2, 2>() = Cb;
     C(2, 2) = c33;
     material.evaluate(C, point, history_old, history_new, S, D);
+    material.add_membrane_overstress(C, point, history_old, history_new, S, D);
     const PlaneStressState state = condensed_state(S, D, c33, det2);
     const double r1 = w.m.dot(state.S * w.m), r33 = S(2, 2);
     const Vector6 dS_dbeta = D * dE_dbeta, dS_dc33 = 0.5 * D.col(2);

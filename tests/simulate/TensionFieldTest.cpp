@@ -41,6 +41,29 @@ PlaneStressState relaxed(const Material& m, const Eigen::Matrix2d& C) {
   return tension_field_stress(m, C, MaterialPoint{}, 1.0, nullptr, nullptr);
 }
 
+// The change of C for a strain step h in Voigt component j (E11, E22, 2 E12).
+Eigen::Matrix2d strain_step(int j, double h) {
+  Eigen::Matrix2d dC = Eigen::Matrix2d::Zero();
+  if (j < 2)
+    dC(j, j) = 2.0 * h;  // dE_jj = h
+  else
+    dC(0, 1) = dC(1, 0) = h;  // 2 dE12 = h
+  return dC;
+}
+
+// dS/dE (Voigt) of the in-plane stress S(C) by central differences at C0.
+template <class StressAt>
+Eigen::Matrix3d central_difference_tangent(const StressAt& stress_at, const Eigen::Matrix2d& C0,
+                                           double h) {
+  Eigen::Matrix3d fd;
+  for (int j = 0; j < 3; ++j) {
+    const Eigen::Matrix2d dC = strain_step(j, h);
+    const Eigen::Matrix2d dS = (stress_at(C0 + dC) - stress_at(C0 - dC)) / (2.0 * h);
+    fd.col(j) << dS(0, 0), dS(1, 1), dS(0, 1);
+  }
+  return fd;
+}
+
 }  // namespace
 
 TEST(TensionField, TautSheetKeepsThePlaneStressLaw) {
@@ -100,18 +123,8 @@ TEST(TensionField, WrinkledTangentMatchesFiniteDifferences) {
     for (const Eigen::Matrix2d& C0 : {stretched(1.3, 0.7, 0.5), stretched(1.1, 0.5, -1.2)}) {
       const auto s = relaxed(*m, C0);
       ASSERT_EQ(s.wrinkling, Wrinkling::wrinkled) << spec.name;
-      Eigen::Matrix3d fd;
-      const double h = 1e-6;
-      for (int j = 0; j < 3; ++j) {
-        Eigen::Matrix2d dC = Eigen::Matrix2d::Zero();
-        if (j < 2)
-          dC(j, j) = 2.0 * h;  // dE_jj = h
-        else
-          dC(0, 1) = dC(1, 0) = h;  // 2 dE12 = h
-        const Eigen::Matrix2d Sp = relaxed(*m, C0 + dC).S, Sm = relaxed(*m, C0 - dC).S;
-        const Eigen::Matrix2d dS = (Sp - Sm) / (2.0 * h);
-        fd.col(j) << dS(0, 0), dS(1, 1), dS(0, 1);
-      }
+      const Eigen::Matrix3d fd = central_difference_tangent(
+          [&](const Eigen::Matrix2d& C) { return relaxed(*m, C).S; }, C0, 1e-6);
       EXPECT_LT((fd - s.D).norm(), 1e-5 * s.D.norm()) << spec.name << "\n" << fd << "\n\n" << s.D;
     }
   }
@@ -131,11 +144,7 @@ TEST(TensionField, TangentMatchesFiniteDifferencesAcrossStates) {
     const double h = 1e-7;
     bool same_state = true;
     for (int j = 0; j < 3; ++j) {
-      Eigen::Matrix2d dC = Eigen::Matrix2d::Zero();
-      if (j < 2)
-        dC(j, j) = 2.0 * h;
-      else
-        dC(0, 1) = dC(1, 0) = h;
+      const Eigen::Matrix2d dC = strain_step(j, h);
       const auto sp = relaxed(*m, C0 + dC), sm = relaxed(*m, C0 - dC);
       same_state = same_state && sp.wrinkling == s.wrinkling && sm.wrinkling == s.wrinkling;
       const Eigen::Matrix2d dS = (sp.S - sm.S) / (2.0 * h);
@@ -195,4 +204,34 @@ TEST(TensionField, ElementTangentMatchesFiniteDifferences) {
   }
   EXPECT_GT(counted[1], 30);
   EXPECT_GT(counted[2], 10);
+}
+
+// The viscous default wall, contracting: the membrane tangent (elastic, branch and muscle)
+// is the derivative of the membrane stress, taut and wrinkled, and it is symmetric — the
+// wall keeps the symmetric LDLᵀ solver.
+TEST(TensionField, ViscousMembraneTangentIsConsistentAndSymmetric) {
+  const auto m = make_material({"bladder", {{"contractility", 20e3}}});
+  MaterialPoint point;
+  point.dt_s = 0.5;
+  point.activation = 0.6;
+  point.fibers = {Eigen::Vector3d(0.8, 0.6, 0.0), Eigen::Vector3d(-0.6, 0.8, 0.0)};
+  std::vector<double> h_old(m->history_size()), h_new(h_old.size());
+  for (std::size_t i = 0; i < h_old.size(); ++i) h_old[i] = 30.0 * std::sin(double(i));
+  h_old[h_old.size() - 4] = h_old[h_old.size() - 2] = 0.4;   // fibers' committed stretch - 1
+  h_old[h_old.size() - 3] = h_old[h_old.size() - 1] = -0.2;  // Hill factor - 1
+  int wrinkled = 0;
+  for (const Eigen::Matrix2d& C0 : {stretched(1.5, 1.3, 0.4), stretched(1.4, 0.6, -0.9)}) {
+    auto at = [&](const Eigen::Matrix2d& C) {
+      return tension_field_stress(*m, C, point, 1.0, h_old.data(), h_new.data());
+    };
+    const auto s = at(C0);
+    wrinkled += s.wrinkling == Wrinkling::wrinkled;
+    const Eigen::Matrix3d fd =
+        central_difference_tangent([&](const Eigen::Matrix2d& C) { return at(C).S; }, C0, 1e-7);
+    EXPECT_LT((fd - s.D).norm(), 1e-5 * s.D.norm()) << int(s.wrinkling) << "\n"
+                                                    << fd << "\n\n"
+                                                    << s.D;
+    EXPECT_LT((s.D - s.D.transpose()).norm(), 1e-12 * s.D.norm()) << int(s.wrinkling);
+  }
+  EXPECT_EQ(wrinkled, 1);
 }

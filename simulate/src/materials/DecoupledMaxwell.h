@@ -27,12 +27,17 @@ class DecoupledMaxwell : public Material {
   }
   void evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point, const double* history_old,
                 double* history_new, Eigen::Matrix3d& S, Voigt6& D) const override;
+  void add_membrane_overstress(const Eigen::Matrix3d& C, const MaterialPoint& point,
+                               const double* history_old, double* history_new, Eigen::Matrix3d& S,
+                               Voigt6& D) const override;
 
  private:
   OgdenVolumetric volumetric_;
   std::unique_ptr<IsochoricPart> isochoric_;
   std::vector<MaxwellBranch> branches_;
   std::optional<DetrusorMuscle> muscle_;
+  void passive(const Kinematics& k, const MaterialPoint& point, Eigen::Matrix3d& S,
+               Voigt6& D) const;
   std::size_t muscle_offset_ = 0;  // where the muscle's history starts
 };
 

@@ -51,6 +51,14 @@ class Material {
   virtual void evaluate(const Eigen::Matrix3d& C, const MaterialPoint& point,
                         const double* history_old, double* history_new, Eigen::Matrix3d& S,
                         Voigt6& D) const = 0;
+
+  // The wall's viscous overstress, a membrane quantity (docs/physics.md §2.5): called by the
+  // plane-stress solve (PlaneStress.h) on its 3-D evaluation S, D at C = [C_αβ 0; 0 C33].
+  // Adds an overstress with in-plane components only to S, and its derivative to the
+  // in-plane rows of D, and writes its history. Nothing for a law without one.
+  virtual void add_membrane_overstress(const Eigen::Matrix3d& /*C*/, const MaterialPoint& /*point*/,
+                                       const double* /*history_old*/, double* /*history_new*/,
+                                       Eigen::Matrix3d& /*S*/, Voigt6& /*D*/) const {}
 };
 
 // A material chosen by name with its parameters, as written in the pipeline file
