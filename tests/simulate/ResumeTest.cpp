@@ -7,6 +7,8 @@
 // kept.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -41,14 +43,22 @@ bool same(double a, double b) {
   return std::abs(a - b) <= 1e-12 * std::max({std::abs(a), std::abs(b), 1e-300});
 }
 
-void expect_same_history(const std::vector<HistoryRow>& a, const std::vector<HistoryRow>& b) {
+// The eight columns of a history row, in history.csv's order, from either row type (the
+// run's own rows, or rows read back from history.csv).
+std::array<double, 8> columns(const HistoryRow& r) {
+  return {r.time_s,     r.infused_ml, r.volume_ml, r.pves_cmh2o,
+          r.pabd_cmh2o, r.pdet_cmh2o, r.flow_ml_s, r.voided_ml};
+}
+std::array<double, 8> columns(const HistoryCsvRow& r) {
+  return {r.t, r.infused, r.volume, r.pves, r.pabd, r.pdet, r.flow, r.voided};
+}
+
+template <class Row>
+void expect_same_rows(const std::vector<Row>& a, const std::vector<Row>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const double x[] = {a[i].time_s,     a[i].infused_ml, a[i].volume_ml, a[i].pves_cmh2o,
-                        a[i].pabd_cmh2o, a[i].pdet_cmh2o, a[i].flow_ml_s, a[i].voided_ml};
-    const double y[] = {b[i].time_s,     b[i].infused_ml, b[i].volume_ml, b[i].pves_cmh2o,
-                        b[i].pabd_cmh2o, b[i].pdet_cmh2o, b[i].flow_ml_s, b[i].voided_ml};
-    for (int k = 0; k < 8; ++k)
+    const std::array<double, 8> x = columns(a[i]), y = columns(b[i]);
+    for (std::size_t k = 0; k < x.size(); ++k)
       EXPECT_TRUE(same(x[k], y[k]))
           << "row " << i << " column " << k << ": " << x[k] << " vs " << y[k];
   }
@@ -104,7 +114,7 @@ TEST(Resume, ASimulationKilledMidFillingResumesToTheSameHistory) {
     resumed.options.checkpoints.resume = true;
     const CystometryResult continued = resumed.run();
     ASSERT_TRUE(continued.completed) << continued.failure;
-    expect_same_history(whole.history, continued.history);
+    expect_same_rows(whole.history, continued.history);
     EXPECT_EQ(without_compute_times(whole.summary), without_compute_times(continued.summary));
   }
 }
@@ -239,15 +249,7 @@ void expect_same_summary(const nlohmann::json& a, const nlohmann::json& b,
 }
 
 void expect_same_history_file(const fs::path& a, const fs::path& b) {
-  const std::vector<HistoryCsvRow> x = read_history(a), y = read_history(b);
-  ASSERT_EQ(x.size(), y.size());
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double u[] = {x[i].t,    x[i].infused, x[i].volume, x[i].pves,
-                        x[i].pabd, x[i].pdet,    x[i].flow,   x[i].voided};
-    const double v[] = {y[i].t,    y[i].infused, y[i].volume, y[i].pves,
-                        y[i].pabd, y[i].pdet,    y[i].flow,   y[i].voided};
-    for (int k = 0; k < 8; ++k) EXPECT_TRUE(same(u[k], v[k])) << "row " << i << " column " << k;
-  }
+  expect_same_rows(read_history(a), read_history(b));
 }
 
 nlohmann::json summary_of(const fs::path& dir) {
