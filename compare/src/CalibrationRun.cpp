@@ -109,8 +109,9 @@ simulate::PressureTrace recorded_voiding_pabd(const RecordingAnalysis& a) {
   if (!r.has_time() || r.pabd_cmh2o.empty()) return trace;
   const double t0 = r.time_s[a.ics.capacity_row];
   for (std::size_t i = a.ics.capacity_row; i < r.rows(); ++i) {
-    if (!trace.empty() && !(r.time_s[i] > trace.time_s.back())) continue;
-    trace.time_s.push_back(r.time_s[i] - t0);
+    const double t = r.time_s[i] - t0;
+    if (!trace.empty() && !(t > trace.time_s.back())) continue;  // a repeated time stamp
+    trace.time_s.push_back(t);
     trace.cmh2o.push_back(std::max(0.0, r.pabd_cmh2o[i]));
   }
   if (trace.time_s.size() < 2) return {};
