@@ -69,12 +69,19 @@ const std::vector<ModelParameter>& all_parameters() {
       // The detrusor's contractility, the wall material's (docs/physics.md §2.6, §12).
       {{"detrusor", "kPa", 100.0, 0.1, 1000.0, true}, material("contractility", 1e3)},
       {{"straining", "kPa", 4.0, 0.1, 20.0, true}, straining},
+      // The latency of the drive from the end of filling: the onset of flow (§7.2).
+      {{"activation_delay", "s", 5.0, 0.1, 60.0, true},
+       protocol(&ProtocolSettings::activation_delay_s)},
       {{"activation_onset", "s", 2.0, 0.05, 60.0, true},
        protocol(&ProtocolSettings::activation_onset_s)},
       // The fade of the drive sets the flow's tail-off and so the flow time (§7.2).
       {{"activation_fade", "s", 5.0, 0.1, 60.0, true},
        protocol(&ProtocolSettings::activation_fade_s)},
       {{"p_close", "cmH2O", 10.0, 0.5, 150.0, true}, closing_pressure},
+      // The sphincter's recovery once the urethra is open: the flow's tail and the
+      // after-contraction of a detrusor voiding against a closing urethra (physics.md §5).
+      {{"urethra_recovery", "s", 20.0, 0.5, 600.0, true},
+       protocol(&ProtocolSettings::urethra_recovery_s)},
   };
   return all;
 }

@@ -17,7 +17,8 @@ std::vector<double> volume_range_from_text(const std::string& text) {
 void add_calibration_entries(CompareOptions& o, ParameterTable& t) {
   CalibrationModel& m = o.simulation;
   t.text("calibrate", o.calibrate,
-         "mu[,k,beta,tau,k1,k2,p_open,r1,r2,detrusor,straining,activation_onset]",
+         "mu[,k,beta,tau,k1,k2,p_open,r1,r2,detrusor,straining,activation_delay,activation_onset,"
+         "activation_fade,p_close,urethra_recovery]",
          "fit these parameters to the measured recording: filling Pdet(V), and with a voiding "
          "parameter also flow, Pdet and voided volume while voiding (needs the mesh input)");
   t.number("mu_kpa", m.mu_kpa, "kPa",

@@ -12,7 +12,8 @@ double first_order_rise(double t, double tau) {
 
 }  // namespace
 
-double ActivationCurve::at(double t) const {
+double ActivationCurve::at(double t_since_start) const {
+  const double t = t_since_start - delay_s;
   if (t <= 0.0) return 0.0;
   if (t <= plateau_s) return first_order_rise(t, onset_s);
   const double held = first_order_rise(plateau_s, onset_s);

@@ -85,7 +85,7 @@ CystometryProtocol::CystometryProtocol(const ProtocolSettings& settings, const R
           settings.p_open_cmh2o, settings.p_close_cmh2o, settings.r1_cmh2o_s_per_ml,
           settings.r2_cmh2o_s2_per_ml2, settings.urethra_half_open_cmh2o)),
       activation_{settings.activation_onset_s, settings.activation_plateau_s,
-                  settings.activation_fade_s} {}
+                  settings.activation_fade_s, settings.activation_delay_s} {}
 
 CystometryProtocol::~CystometryProtocol() = default;
 
@@ -192,7 +192,9 @@ StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
     step.dt_s = dt;
     step.end_time_s = time_ + dt;
     step.inflow_m3_s = q_in;
-    step.urethra = outlet ? &urethra_ : nullptr;
+    if (outlet)
+      urethra_now_ = urethra_.recovering(settings_.urethra_recovery_s, time_ + dt - t_open_);
+    step.urethra = outlet ? &urethra_now_ : nullptr;
     step.loads = loads_at(time_ + dt);
     step.infused_m3 = infused_;
     step.voided_m3 = voided_;
@@ -276,6 +278,7 @@ void CystometryProtocol::void_bladder() {
   while (time_ - t_void_ < settings_.max_void_s) {
     if (!urethra_open_ && model_->pves() >= urethra_.opening_pressure()) {
       urethra_open_ = true;
+      t_open_ = time_;
       model_->urethra_opens(urethra_);
       // The flow starts from zero: a step grown through the isovolumetric contraction
       // would jump over its rise (and the pressure could fall below p_close in one step).
@@ -334,8 +337,9 @@ void CystometryProtocol::void_bladder() {
 bool CystometryProtocol::contraction_spent(double p_before) const {
   const double t = time_ - t_void_;
   if (!settings_.voiding_pabd.empty() && t < settings_.voiding_pabd.time_s.back()) return false;
-  const bool full = t >= kFullOnsets * settings_.activation_onset_s;
-  const bool fading = t > settings_.activation_plateau_s;
+  const double active = t - settings_.activation_delay_s;  // since the drive's onset
+  const bool full = active >= kFullOnsets * settings_.activation_onset_s;
+  const bool fading = active > settings_.activation_plateau_s;
   const bool still = model_->pves() - p_before < units::pa_from_cmh2o(kStillPressureCmH2O);
   return fading || (full && still);
 }
@@ -424,7 +428,8 @@ void CystometryProtocol::summarize(double seconds) {
                  {"p_close_cmh2o", settings_.p_close_cmh2o},
                  {"r1_cmh2o_s_per_ml", settings_.r1_cmh2o_s_per_ml},
                  {"r2_cmh2o_s2_per_ml2", settings_.r2_cmh2o_s2_per_ml2},
-                 {"half_open_cmh2o", settings_.urethra_half_open_cmh2o}};
+                 {"half_open_cmh2o", settings_.urethra_half_open_cmh2o},
+                 {"recovery_s", settings_.urethra_recovery_s}};
   // What emptied the bladder: the drive when the urethra opened, else none.
   s["voiding_drive"] = urethra_open_ ? drive_name(settings_.drive) : "none";
   // What the abdomen did while voiding: the recording's Pabd replayed, or at rest

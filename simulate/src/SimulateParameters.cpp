@@ -136,6 +136,9 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
            NumberRange::at_least(0).at_most(100),
            "collapsible urethra: pressure above closing at which its lumen is about half "
            "open (0: rigid, the quadratic law)");
+  t.number("urethra_recovery_s", p.urethra_recovery_s, "s", NumberRange::at_least(0).at_most(600),
+           "time constant of the sphincter's recovery once the urethra is open: its closing "
+           "pressure rises back towards p_open_cmh2o (0: it stays at p_close_cmh2o)");
   t.number("r1", p.r1_cmh2o_s_per_ml, "cmH2O*s/ml", NumberRange::at_least(0).at_most(100),
            "urethral linear resistance R1");
   t.number("r2", p.r2_cmh2o_s2_per_ml2, "cmH2O*s2/ml2", NumberRange::at_least(0).at_most(100),
@@ -146,6 +149,8 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
       "what voids the bladder: the detrusor's contraction or abdominal straining");
   t.number("straining_kpa", p.straining_kpa, "kPa", NumberRange::at_least(0).at_most(50),
            "abdominal straining pressure at full activation (drive straining)");
+  t.number("activation_delay_s", p.activation_delay_s, "s", NumberRange::at_least(0).at_most(120),
+           "latency from the end of filling to the drive's activation (0: at once)");
   t.number("activation_onset_s", p.activation_onset_s, "s", NumberRange::at_least(0).at_most(60),
            "time constant of the drive's activation (0: at once)");
   t.number("activation_plateau_s", p.activation_plateau_s, "s",

@@ -89,6 +89,13 @@ double UrethraLaw::pressure_drop_derivative(double flow_m3_s) const {
   return 1.0 / dQ;
 }
 
+UrethraLaw UrethraLaw::recovering(double tau_s, double s) const {
+  if (!(tau_s > 0.0) || !(s > 0.0)) return *this;
+  const double closing =
+      opening_pressure_ - (opening_pressure_ - closing_pressure_) * std::exp(-s / tau_s);
+  return {opening_pressure_, closing, r1_, r2_, half_open_};
+}
+
 UrethraLaw UrethraLaw::shifted(double dp_pa) const {
   return {opening_pressure_ + dp_pa, closing_pressure_ + dp_pa, r1_, r2_, half_open_};
 }

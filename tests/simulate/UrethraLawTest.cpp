@@ -148,3 +148,19 @@ TEST(UrethraLaw, CollapsibleUrethraPressureFormInvertsItsFlowForm) {
   EXPECT_NEAR(shifted.opening_pressure(), pa(23.0), 1e-9);
   EXPECT_NEAR(shifted.flow(pa(23.0)), law.flow(pa(20.0)), 1e-15);
 }
+
+// The recovering sphincter (docs/physics.md §5, the sphincter's recovery) by hand: opened at 20 and
+// closing at 10 cmH2O, τ = 10 s; one τ after opening it closes at 20 − 10/e = 16.3212 cmH2O, and
+// the open lumen's law is the same one measured from there.
+TEST(UrethraLaw, ARecoveringSphincterRaisesTheClosingPressureTowardsTheOpeningOne) {
+  const UrethraLaw& law = collapsible_law();
+  const UrethraLaw later = law.recovering(10.0, 10.0);
+  EXPECT_NEAR(later.closing_pressure(), pa(20.0 - 10.0 * std::exp(-1.0)), 1e-9);
+  EXPECT_NEAR(later.opening_pressure(), pa(20.0), 1e-12);
+  EXPECT_EQ(later.flow(pa(16.0)), 0.0);
+  EXPECT_NEAR(later.flow(pa(20.0 - 10.0 * std::exp(-1.0) + 1.0)), law.flow(pa(11.0)), 1e-15);
+  // Long after, it closes where it opened; τ = 0 or the moment of opening: unchanged.
+  EXPECT_NEAR(law.recovering(10.0, 1e4).closing_pressure(), pa(20.0), 1e-9);
+  EXPECT_EQ(law.recovering(0.0, 10.0).closing_pressure(), law.closing_pressure());
+  EXPECT_EQ(law.recovering(10.0, 0.0).closing_pressure(), law.closing_pressure());
+}

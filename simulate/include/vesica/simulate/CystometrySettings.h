@@ -36,6 +36,7 @@ struct ProtocolSettings {
   // while her detrusor voids raises Pves by her Pabd, and the model's Pdet stays the
   // detrusor's. Empty: the resting pabd_cmh2o.
   PressureTrace voiding_pabd;
+  double activation_delay_s = 0.0;  // latency from the end of filling to the drive's onset
   double activation_onset_s = 2.0;
   double activation_plateau_s = 60.0;
   double activation_fade_s = 5.0;
@@ -47,6 +48,10 @@ struct ProtocolSettings {
   double r1_cmh2o_s_per_ml = 0.2;
   double r2_cmh2o_s2_per_ml2 = 0.02;
   double urethra_half_open_cmh2o = 5.0;
+  // The sphincter's recovery once the urethra has opened (docs/physics.md §5, the sphincter's
+  // recovery): its closing pressure rises back towards p_open with this time constant (s), so that
+  // the flow tails off against a still contracting detrusor. 0: it stays at p_close.
+  double urethra_recovery_s = 0.0;
   double stop_flow_ml_s = 1.0;  // voiding ends when the flow falls below this
   double max_void_s = 120.0;
   // Environment
