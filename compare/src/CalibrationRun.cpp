@@ -165,6 +165,57 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
   return m;
 }
 
+// Whether the fit has both the wall's passive parameters and the voiding's.
+bool mixes_filling_and_voiding(const std::vector<ModelParameter>& params) {
+  const auto voiding = [](const ModelParameter& p) { return p.fit.voiding; };
+  return std::any_of(params.begin(), params.end(), voiding) &&
+         !std::all_of(params.begin(), params.end(), voiding);
+}
+
+// One fit's stages, parameters and counts after another's (the first one's stages named
+// after its phase).
+void prepend(const CalibrationResult& first, const std::string& phase, CalibrationResult& r) {
+  std::vector<CalibrationStage> stages = first.stages;
+  for (auto& s : stages) s.name = phase + ": " + s.name;
+  r.stages.insert(r.stages.begin(), stages.begin(), stages.end());
+  r.parameters.insert(r.parameters.begin(), first.parameters.begin(), first.parameters.end());
+  r.simulations += first.simulations;
+  r.failed_simulations += first.failed_simulations;
+  r.iterations += first.iterations;
+  r.seconds += first.seconds;
+  for (const std::string& n : first.notes) r.notes.push_back(phase + ": " + n);
+}
+
+// The wall's passive parameters from the filling alone, then the voiding's with them held
+// (docs/compare.md, "Filling, then voiding"): the voiding readings, many more and scaled
+// more loosely, would otherwise bend the filling curve to help the voiding fit, and the
+// passive wall is what the filling measures.
+FitOutcome fit_filling_then_voiding(CalibrationProblem pb, const CalibrationTargets& filling) {
+  CalibrationProblem passive = pb;
+  passive.parameters.clear();
+  std::vector<ModelParameter> active;
+  for (const ModelParameter& p : pb.parameters)
+    (p.fit.voiding ? active : passive.parameters).push_back(p);
+  passive.targets = filling;
+  passive.model.protocol.void_after_fill = false;
+  const FitOutcome first = calibrate(passive);
+  if (first.result.parameters.size() != passive.parameters.size() ||
+      first.final_run.recording.rows() == 0)
+    return first;
+  for (std::size_t i = 0; i < passive.parameters.size(); ++i)
+    passive.parameters[i].apply(first.result.parameters[i].value, pb.model.material,
+                                pb.model.protocol);
+  pb.parameters = active;
+  FitOutcome out = calibrate(pb);
+  prepend(first.result, "filling", out.result);
+  out.result.notes.insert(
+      out.result.notes.begin(),
+      "the wall's passive parameters were fitted to the filling alone, then held while the "
+      "voiding parameters were fitted to the whole recording; their intervals are the "
+      "filling fit's");
+  return out;
+}
+
 }  // namespace
 
 CalibrationResult calibrate_from_options(const CompareOptions& o, const RecordingAnalysis& a,
@@ -182,7 +233,9 @@ CalibrationResult calibrate_from_options(const CompareOptions& o, const Recordin
   pb.use_surrogate = o.simulation.surrogate;
   pb.budget.surrogate_starts = o.simulation.surrogate_starts;
   pb.budget.model_simulations = o.max_simulations;
-  FitOutcome out = calibrate(pb);
+  FitOutcome out = voiding && mixes_filling_and_voiding(pb.parameters)
+                       ? fit_filling_then_voiding(pb, targets_for(o, a, comparison, false))
+                       : calibrate(pb);
   if (voiding && out.final_run.recording.rows() > 0)
     out.result.voiding = voiding_agreement(a, out.final_run.recording);
   notes.push_back(fmt::format("the model fills at {:.3g} ml/min from {:g} ml",
