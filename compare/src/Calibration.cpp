@@ -80,8 +80,8 @@ const std::vector<ModelParameter>& all_parameters() {
       {{"p_close", "cmH2O", 10.0, 0.5, 150.0, true}, closing_pressure},
       // The sphincter's recovery once the urethra is open: the flow's tail and the
       // after-contraction of a detrusor voiding against a closing urethra (physics.md §5).
-      {{"urethra_recovery", "s", 20.0, 0.5, 600.0, true},
-       protocol(&ProtocolSettings::urethra_recovery_s)},
+      {{"urethra_recovery", "-", 0.5, 0.02, 1.0, true},
+       protocol(&ProtocolSettings::urethra_recovery_half)},
   };
   return all;
 }

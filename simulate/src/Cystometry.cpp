@@ -59,7 +59,8 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
   require(p.p_close_cmh2o <= p.p_open_cmh2o && p.urethra_half_open_cmh2o >= 0.0,
           "the urethra closes at or below its opening pressure: need p_close_cmh2o <= "
           "p_open_cmh2o");
-  require(p.urethra_recovery_s >= 0.0, "urethra_recovery_s must be >= 0 (0: no recovery)");
+  require(p.urethra_recovery_half > 0.0 && p.urethra_recovery_half <= 1.0,
+          "urethra_recovery_half must be in (0, 1] (1: no recovery)");
   require(p.activation_delay_s >= 0.0 && p.activation_onset_s >= 0.0 &&
               p.activation_plateau_s >= 0.0 && p.activation_fade_s >= 0.0 && p.straining_kpa >= 0.0,
           "activation times and straining_kpa must be >= 0");
@@ -71,8 +72,9 @@ void validate(const ProtocolSettings& p, const RunOptions& o, double reference_m
       usage_error("level 2 time steps must be > 0 (0: adaptive)");
     if (!(o.level2.void_dt_min_s > 0.0 && o.level2.void_dt_min_s <= o.level2.void_dt_max_s))
       usage_error("level 2 voiding steps need 0 < void_dt_min_s <= void_dt_max_s");
-    if (p.urethra_recovery_s > 0.0)
-      usage_error("level 2 keeps the urethra as it opened: urethra_recovery_s needs level 0 or 1");
+    if (p.urethra_recovery_half < 1.0)
+      usage_error(
+          "level 2 keeps the urethra as it opened: urethra_recovery_half needs level 0 or 1");
     if (o.dynamic || o.reference != ReferenceState::Scale)
       usage_error("level 2 supports the scaled reference (--reference scale) without --dynamic");
   }

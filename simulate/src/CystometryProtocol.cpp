@@ -192,8 +192,10 @@ StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
     step.dt_s = dt;
     step.end_time_s = time_ + dt;
     step.inflow_m3_s = q_in;
-    if (outlet)
-      urethra_now_ = urethra_.recovering(settings_.urethra_recovery_s, time_ + dt - t_open_);
+    // The sphincter's recovery at the volume the step starts from.
+    if (outlet && volume_at_opening_ > 0.0)
+      urethra_now_ = urethra_.recovering(settings_.urethra_recovery_half,
+                                         1.0 - model_->volume() / volume_at_opening_);
     step.urethra = outlet ? &urethra_now_ : nullptr;
     step.loads = loads_at(time_ + dt);
     step.infused_m3 = infused_;
@@ -278,7 +280,7 @@ void CystometryProtocol::void_bladder() {
   while (time_ - t_void_ < settings_.max_void_s) {
     if (!urethra_open_ && model_->pves() >= urethra_.opening_pressure()) {
       urethra_open_ = true;
-      t_open_ = time_;
+      volume_at_opening_ = model_->volume();
       model_->urethra_opens(urethra_);
       // The flow starts from zero: a step grown through the isovolumetric contraction
       // would jump over its rise (and the pressure could fall below p_close in one step).
@@ -429,7 +431,7 @@ void CystometryProtocol::summarize(double seconds) {
                  {"r1_cmh2o_s_per_ml", settings_.r1_cmh2o_s_per_ml},
                  {"r2_cmh2o_s2_per_ml2", settings_.r2_cmh2o_s2_per_ml2},
                  {"half_open_cmh2o", settings_.urethra_half_open_cmh2o},
-                 {"recovery_s", settings_.urethra_recovery_s}};
+                 {"recovery_half", settings_.urethra_recovery_half}};
   // What emptied the bladder: the drive when the urethra opened, else none.
   s["voiding_drive"] = urethra_open_ ? drive_name(settings_.drive) : "none";
   // What the abdomen did while voiding: the recording's Pabd replayed, or at rest

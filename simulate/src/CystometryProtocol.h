@@ -74,7 +74,7 @@ class CystometryProtocol {
   const RunOptions& options_;
   const UrethraLaw urethra_;
   UrethraLaw urethra_now_ = urethra_;  // urethra_ as it recovers (physics.md §5), for one step
-  double t_open_ = 0.0;                // when the urethra opened
+  double volume_at_opening_ = 0.0;     // m³
   const ActivationCurve activation_;
   CavityModel* model_ = nullptr;
   StepRules rules_;

@@ -136,9 +136,10 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
            NumberRange::at_least(0).at_most(100),
            "collapsible urethra: pressure above closing at which its lumen is about half "
            "open (0: rigid, the quadratic law)");
-  t.number("urethra_recovery_s", p.urethra_recovery_s, "s", NumberRange::at_least(0).at_most(600),
-           "time constant of the sphincter's recovery once the urethra is open: its closing "
-           "pressure rises back towards p_open_cmh2o (0: it stays at p_close_cmh2o)");
+  t.number("urethra_recovery_half", p.urethra_recovery_half, "-",
+           NumberRange::greater_than(0).at_most(1),
+           "the sphincter's recovery: the voided fraction at which the urethra's closing "
+           "pressure has risen half-way back to p_open_cmh2o (0.5: linearly; 1: no recovery)");
   t.number("r1", p.r1_cmh2o_s_per_ml, "cmH2O*s/ml", NumberRange::at_least(0).at_most(100),
            "urethral linear resistance R1");
   t.number("r2", p.r2_cmh2o_s2_per_ml2, "cmH2O*s2/ml2", NumberRange::at_least(0).at_most(100),

@@ -89,11 +89,13 @@ double UrethraLaw::pressure_drop_derivative(double flow_m3_s) const {
   return 1.0 / dQ;
 }
 
-UrethraLaw UrethraLaw::recovering(double tau_s, double s) const {
-  if (!(tau_s > 0.0) || !(s > 0.0)) return *this;
-  const double closing =
-      opening_pressure_ - (opening_pressure_ - closing_pressure_) * std::exp(-s / tau_s);
-  return {opening_pressure_, closing, r1_, r2_, half_open_};
+UrethraLaw UrethraLaw::recovering(double half_way_fraction, double voided_fraction) const {
+  if (!(half_way_fraction > 0.0 && half_way_fraction < 1.0) || !(voided_fraction > 0.0))
+    return *this;
+  const double m = std::log(2.0) / std::log(1.0 / half_way_fraction);
+  const double risen = std::pow(std::min(voided_fraction, 1.0), m);
+  return {opening_pressure_, closing_pressure_ + (opening_pressure_ - closing_pressure_) * risen,
+          r1_, r2_, half_open_};
 }
 
 UrethraLaw UrethraLaw::shifted(double dp_pa) const {

@@ -52,13 +52,12 @@ class UrethraLaw {
   // The same urethra with both pressures raised by dp (Pa): the law in another pressure
   // datum (e.g. the hydrostatic part at the outlet removed).
   UrethraLaw shifted(double dp_pa) const;
-  // The urethra s seconds after it opened, its sphincter recovering with time constant τ
-  // (docs/physics.md §5, the sphincter's recovery): the closing pressure rises back towards the
-  // opening one,
-  //   p_close(s) = p_open − (p_open − p_close) exp(−s/τ),
-  // so that the flow tails off and stops against a detrusor that still contracts.
-  // τ = 0 (or s ≤ 0) is this law.
-  UrethraLaw recovering(double tau_s, double s) const;
+  // The urethra once the fraction f of the urine it opened on has been voided, its
+  // sphincter recovering as the bladder empties (docs/physics.md §5, the sphincter's
+  // recovery): the closing pressure rises back towards the opening one,
+  //   p_close(f) = p_close + (p_open − p_close) f^m,   m = ln 2 / ln(1/f_half),
+  // half-way at f = f_half (m = 1 at ½: linear). f_half ≥ 1 (or f ≤ 0) is this law.
+  UrethraLaw recovering(double half_way_fraction, double voided_fraction) const;
 
  private:
   // The fully open lumen's flow q at Δp > 0 and dq/dΔp.

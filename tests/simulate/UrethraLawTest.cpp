@@ -149,18 +149,23 @@ TEST(UrethraLaw, CollapsibleUrethraPressureFormInvertsItsFlowForm) {
   EXPECT_NEAR(shifted.flow(pa(23.0)), law.flow(pa(20.0)), 1e-15);
 }
 
-// The recovering sphincter (docs/physics.md §5, the sphincter's recovery) by hand: opened at 20 and
-// closing at 10 cmH2O, τ = 10 s; one τ after opening it closes at 20 − 10/e = 16.3212 cmH2O, and
-// the open lumen's law is the same one measured from there.
+// The recovering sphincter (docs/physics.md §5, the sphincter's recovery) by hand: opened
+// at 20 and closing at 10 cmH2O. Half-way at half voided, it rises linearly: 12.5 cmH2O at a
+// quarter voided, 15 at half; half-way at a quarter voided, m = ln 2 / ln 4 = ½: 15 cmH2O at
+// a quarter, 10 + 10 √0.5 = 17.0711 at half. Empty, it closes where it opened; the open
+// lumen's law is the same one measured from the risen closing pressure.
 TEST(UrethraLaw, ARecoveringSphincterRaisesTheClosingPressureTowardsTheOpeningOne) {
   const UrethraLaw& law = collapsible_law();
-  const UrethraLaw later = law.recovering(10.0, 10.0);
-  EXPECT_NEAR(later.closing_pressure(), pa(20.0 - 10.0 * std::exp(-1.0)), 1e-9);
-  EXPECT_NEAR(later.opening_pressure(), pa(20.0), 1e-12);
-  EXPECT_EQ(later.flow(pa(16.0)), 0.0);
-  EXPECT_NEAR(later.flow(pa(20.0 - 10.0 * std::exp(-1.0) + 1.0)), law.flow(pa(11.0)), 1e-15);
-  // Long after, it closes where it opened; τ = 0 or the moment of opening: unchanged.
-  EXPECT_NEAR(law.recovering(10.0, 1e4).closing_pressure(), pa(20.0), 1e-9);
-  EXPECT_EQ(law.recovering(0.0, 10.0).closing_pressure(), law.closing_pressure());
-  EXPECT_EQ(law.recovering(10.0, 0.0).closing_pressure(), law.closing_pressure());
+  EXPECT_NEAR(law.recovering(0.5, 0.25).closing_pressure(), pa(12.5), 1e-9);
+  EXPECT_NEAR(law.recovering(0.5, 0.5).closing_pressure(), pa(15.0), 1e-9);
+  EXPECT_NEAR(law.recovering(0.25, 0.25).closing_pressure(), pa(15.0), 1e-9);
+  EXPECT_NEAR(law.recovering(0.25, 0.5).closing_pressure(), pa(10.0 + 10.0 * std::sqrt(0.5)), 1e-9);
+  EXPECT_NEAR(law.recovering(0.5, 1.0).closing_pressure(), pa(20.0), 1e-9);
+  const UrethraLaw half = law.recovering(0.5, 0.5);
+  EXPECT_NEAR(half.opening_pressure(), pa(20.0), 1e-12);
+  EXPECT_EQ(half.flow(pa(14.9)), 0.0);
+  EXPECT_NEAR(half.flow(pa(16.0)), law.flow(pa(11.0)), 1e-15);
+  // No recovery (half-way only when empty), or nothing voided yet: the law itself.
+  EXPECT_EQ(law.recovering(1.0, 0.9).closing_pressure(), law.closing_pressure());
+  EXPECT_EQ(law.recovering(0.5, 0.0).closing_pressure(), law.closing_pressure());
 }

@@ -48,10 +48,11 @@ struct ProtocolSettings {
   double r1_cmh2o_s_per_ml = 0.2;
   double r2_cmh2o_s2_per_ml2 = 0.02;
   double urethra_half_open_cmh2o = 5.0;
-  // The sphincter's recovery once the urethra has opened (docs/physics.md §5, the sphincter's
-  // recovery): its closing pressure rises back towards p_open with this time constant (s), so that
-  // the flow tails off against a still contracting detrusor. 0: it stays at p_close.
-  double urethra_recovery_s = 0.0;
+  // The sphincter's recovery as the bladder empties (docs/physics.md §5): the closing
+  // pressure rises from p_close at the opening back to p_open when empty, half-way once
+  // this fraction of the urine the urethra opened on is voided (0.5: linearly), so that the
+  // flow tails off against a still contracting detrusor. 1: it stays at p_close.
+  double urethra_recovery_half = 1.0;
   double stop_flow_ml_s = 1.0;  // voiding ends when the flow falls below this
   double max_void_s = 120.0;
   // Environment
