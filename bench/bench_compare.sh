@@ -16,9 +16,9 @@ bin="$build/bin"
 exe="$bin/vesica-compare"
 data="$here/tests/compare/data"
 shared="${VESICA_SHARED_DIR:-$here/../shared}"
-# The detrusor-voided default wall: its matrix and fibers from filling, its contractility,
-# activation onset and urethral resistances from voiding (docs/simulate.md, calibration).
-calibrate="${VESICA_BENCH_CALIBRATE:-mu,k1,detrusor,r1,r2,activation_onset}"
+# The detrusor-voided default wall: its fibers from filling first, then its contractility,
+# the drive's latency and onset and the sphincter's recovery from voiding (docs/compare.md).
+calibrate="${VESICA_BENCH_CALIBRATE:-k1,k2,detrusor,activation_delay,activation_onset,urethra_recovery}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
