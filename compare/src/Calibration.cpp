@@ -66,8 +66,9 @@ const std::vector<ModelParameter>& all_parameters() {
       {{"r1", "cmH2O s/ml", 0.2, 1e-4, 20.0, true}, protocol(&ProtocolSettings::r1_cmh2o_s_per_ml)},
       {{"r2", "cmH2O s2/ml2", 0.02, 1e-5, 5.0, true},
        protocol(&ProtocolSettings::r2_cmh2o_s2_per_ml2)},
-      // The detrusor's contractility, the wall material's (docs/physics.md §2.6, §12).
-      {{"detrusor", "kPa", 100.0, 0.1, 1000.0, true}, material("contractility", 1e3)},
+      // The detrusor's contractility, the wall material's (docs/physics.md §2.6, §12), up to
+      // well beyond the strongest reported isovolumetric pressures (docs/compare.md).
+      {{"detrusor", "kPa", 100.0, 0.1, 300.0, true}, material("contractility", 1e3)},
       {{"straining", "kPa", 4.0, 0.1, 20.0, true}, straining},
       // The latency of the drive from the end of filling: the onset of flow (§7.2).
       {{"activation_delay", "s", 5.0, 0.1, 60.0, true},
