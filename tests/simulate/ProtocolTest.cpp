@@ -276,13 +276,19 @@ ProtocolSettings strained_by_10_cmh2o() {
   return p;
 }
 
-}  // namespace
-
-TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure) {
+// The same, with an onset of 2 s, through a urethra that opens at 15 and closes at 5 cmH2O.
+ProtocolSettings strained_through_15_and_5_cmh2o() {
   ProtocolSettings p = strained_by_10_cmh2o();
   p.activation_onset_s = 2.0;
   p.p_open_cmh2o = 15.0;
   p.p_close_cmh2o = 5.0;
+  return p;
+}
+
+}  // namespace
+
+TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure) {
+  const ProtocolSettings p = strained_through_15_and_5_cmh2o();
   LumpedBladder model{LumpedOptions{}};
   const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
   ASSERT_TRUE(r.completed) << r.failure;
@@ -319,10 +325,7 @@ TEST(Protocol, TheUrethraOpensAtItsOpeningPressureAndClosesAtItsClosingPressure)
 // falls below 0.5 ml/s with Pves within 0.5 cmH2O above the risen closing pressure, and
 // the bladder keeps more urine than with a relaxed sphincter.
 TEST(Protocol, ARecoveringSphincterEndsTheFlowAtItsRisingClosingPressure) {
-  ProtocolSettings p = strained_by_10_cmh2o();
-  p.activation_onset_s = 2.0;
-  p.p_open_cmh2o = 15.0;
-  p.p_close_cmh2o = 5.0;
+  ProtocolSettings p = strained_through_15_and_5_cmh2o();
   LumpedBladder relaxed_model{LumpedOptions{}};
   const CystometryResult relaxed = CystometryProtocol(p, RunOptions{}).run(relaxed_model);
   p.urethra_recovery_half = 0.5;
