@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "vesica/compare/PiecewiseLinear.h"
@@ -19,6 +20,13 @@ constexpr double kFlowScale = 1.0;     // ml/s: uroflowmeters give whole ml/s
 constexpr double kVoidedScale = 10.0;  // ml: one reading, as heavy as a few flow rows
 // s: the onset of flow is read off to the recording's row spacing of a few seconds
 constexpr double kOnsetScale = 2.0;
+// The ICS read-outs a urologist reports, each one number, weighed as a few readings: Qmax
+// as one flow reading (the readings around it are its plateau, which a least-squares fit of
+// the curve alone would match instead of the maximum), PdetQmax to the 2 cmH2O a voiding
+// Pdet carries of straining artefact, the flow time to a tenth of a normal one.
+constexpr double kQmaxScale = 1.0;      // ml/s
+constexpr double kPdetQmaxScale = 2.0;  // cmH2O
+constexpr double kFlowTimeScale = 4.0;  // s
 // A run "reaches" a volume within this (it stops at capacity to the Newton tolerance).
 constexpr double kReachToleranceMl = 0.01;
 
@@ -39,12 +47,14 @@ struct SimulatedCurves {
   Curve flow_t, pdet_t;           // against the time since the onset, to the end of the run
   Curve flow_v, pdet_v;           // against the voided volume, from capacity on
   double voided_ml = 0;           // at the end of the run
+  IcsParameters ics;              // its ICS read-outs
 };
 
 SimulatedCurves simulated_curves(const Recording& r) {
   SimulatedCurves c;
   if (r.rows() == 0) return c;
   const IcsParameters ics = compute_ics(r, {});
+  c.ics = ics;
   c.filling = filling_curve(r, ics, std::vector<bool>(r.rows(), false));
   const std::vector<double> voided = r.voided_or_integrated_ml();
   c.voided_ml = voided.back();
@@ -125,6 +135,22 @@ SeriesValues voiding_values(const TargetSeries& s, const Curve& curve, const Mod
   return v;
 }
 
+// A completed run's single read-out: a run that never voided has voided nothing, in no
+// time and at no flow (true misfits), and no PdetQmax (not compared).
+double ics_value(Quantity q, const SimulatedCurves& c) {
+  const bool flowed = c.ics.qmax_ml_s && *c.ics.qmax_ml_s > 0.0;
+  switch (q) {
+    case Quantity::MaximumFlow:
+      return flowed ? *c.ics.qmax_ml_s : 0.0;
+    case Quantity::PdetAtMaximumFlow:
+      return flowed && c.ics.pdet_qmax_cmh2o ? *c.ics.pdet_qmax_cmh2o : kNaN;
+    case Quantity::FlowTime:
+      return flowed && c.ics.flow_time_s ? *c.ics.flow_time_s : 0.0;
+    default:
+      return c.voided_ml;
+  }
+}
+
 SeriesValues series_values(const TargetSeries& s, const SimulatedCurves& c, const ModelRun& run) {
   switch (s.abscissa) {
     case Abscissa::BladderVolume:
@@ -149,10 +175,11 @@ SeriesValues series_values(const TargetSeries& s, const SimulatedCurves& c, cons
       v.failure = "the run stopped before the onset of flow" + stopped(run);
     return v;
   }
-  if (!run.completed)
+  if (!run.completed) {
     v.failure = "the run stopped before the end of voiding" + stopped(run);
-  else
-    v.y = {c.voided_ml};
+    return v;
+  }
+  v.y = {ics_value(s.quantity, c)};
   return v;
 }
 
@@ -210,6 +237,22 @@ void add_volume_voiding(const RecordingAnalysis& m, CalibrationTargets& t) {
   add_if_any(std::move(p), t);
 }
 
+// Qmax and PdetQmax of a recording with flow (and Pdet), and with time its flow time.
+void add_ics_readouts(const RecordingAnalysis& m, CalibrationTargets& t) {
+  const auto add = [&t](const char* name, Quantity q, double scale, std::optional<double> v) {
+    if (!v) return;
+    TargetSeries s = series(name, q, Abscissa::None, scale);
+    s.x = {0.0};
+    s.y = {*v};
+    t.series.push_back(std::move(s));
+  };
+  if (!m.ics.qmax_ml_s || !(*m.ics.qmax_ml_s > 0.0)) return;
+  add("maximum flow", Quantity::MaximumFlow, kQmaxScale, m.ics.qmax_ml_s);
+  add("PdetQmax", Quantity::PdetAtMaximumFlow, kPdetQmaxScale, m.ics.pdet_qmax_cmh2o);
+  if (m.recording.has_time())
+    add("flow time", Quantity::FlowTime, kFlowTimeScale, m.ics.flow_time_s);
+}
+
 }  // namespace
 
 std::string TargetSeries::unit() const {
@@ -221,7 +264,12 @@ std::string TargetSeries::unit() const {
     case Quantity::VoidedVolume:
       return "ml";
     case Quantity::OnsetDelay:
+    case Quantity::FlowTime:
       return "s";
+    case Quantity::MaximumFlow:
+      return "ml/s";
+    case Quantity::PdetAtMaximumFlow:
+      return "cmH2O";
   }
   return "";
 }
@@ -281,6 +329,7 @@ bool add_voiding_targets(const RecordingAnalysis& m, CalibrationTargets& t) {
     d.y = {*m.ics.voiding_start_s - r.time_s[m.ics.capacity_row]};
     t.series.push_back(std::move(d));
   }
+  add_ics_readouts(m, t);
   t.voiding = t.series.size() > before;
   if (m.ics.capacity_ml) t.capacity_ml = *m.ics.capacity_ml;
   return t.voiding;

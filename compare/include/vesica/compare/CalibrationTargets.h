@@ -29,7 +29,17 @@ namespace vesica::compare {
 inline constexpr double kFailedResidual = 100.0;
 
 enum class Abscissa { BladderVolume, TimeSinceFlowOnset, VoidedVolume, None };
-enum class Quantity { Pdet, Flow, VoidedVolume, OnsetDelay };
+// The curves' readings, and single ICS read-outs (docs/physics.md §7.3): the voided
+// volume, the delay from capacity to the onset of flow, Qmax, PdetQmax and the flow time.
+enum class Quantity {
+  Pdet,
+  Flow,
+  VoidedVolume,
+  OnsetDelay,
+  MaximumFlow,
+  PdetAtMaximumFlow,
+  FlowTime
+};
 
 struct TargetSeries {
   // "filling Pdet", "voiding flow", "voiding Pdet", "voided volume", "onset of flow"
@@ -59,7 +69,8 @@ CalibrationTargets filling_targets(const RecordingAnalysis& measured, double lo_
 // the onset to the last row with flow (t from the onset, docs/physics.md §7.3); without
 // one, Pdet and flow against the voided volume. Then the voided volume, and with time the
 // delay from capacity to the onset of flow (what the recording's abdominal pressure,
-// replayed from capacity, is aligned with: docs/compare.md). capacity_ml
+// replayed from capacity, is aligned with: docs/compare.md), and the ICS read-outs Qmax,
+// PdetQmax and (with time) the flow time. capacity_ml
 // becomes the recording's capacity (the voiding starts from it). Returns false when the
 // recording has no voiding.
 bool add_voiding_targets(const RecordingAnalysis& measured, CalibrationTargets& targets);
