@@ -22,10 +22,14 @@ std::size_t first_unflagged(const std::vector<bool>& flagged) {
 }
 
 // Capacity: the first row at which the bladder volume reaches its maximum (end of filling).
+// A simulated bladder held at capacity (an isovolumetric contraction) keeps its volume only
+// to the solver's tolerance: a rise of less than kSameVolumeMl is the same volume, not a
+// later capacity.
 std::size_t capacity_row(const Recording& r) {
+  constexpr double kSameVolumeMl = 1e-6;
   std::size_t best = 0;
   for (std::size_t i = 1; i < r.rows(); ++i)
-    if (r.bladder_volume_ml(i) > r.bladder_volume_ml(best)) best = i;
+    if (r.bladder_volume_ml(i) > r.bladder_volume_ml(best) + kSameVolumeMl) best = i;
   return best;
 }
 

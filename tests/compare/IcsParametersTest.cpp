@@ -93,3 +93,22 @@ TEST(IcsParameters, ClassBoundaries) {
   EXPECT_EQ(vc::bci_class(100), "normal");
   EXPECT_EQ(vc::bci_class(99), "weak");
 }
+
+// A simulated bladder held at capacity through an isovolumetric contraction keeps its
+// volume to the solver's tolerance only: capacity is where filling ended (t = 2 s, 350 ml),
+// not the last row of the contraction; flow starts in the interval from 4 s (the linear
+// interpolant is positive on it), 2 s after capacity.
+TEST(IcsParameters, CapacityIsTheEndOfFillingWhenTheContractionCreepsBySolverTolerance) {
+  vesica::io::Recording r;
+  r.time_s = {0, 1, 2, 3, 4, 5, 6, 7};
+  r.volume_ml = {300, 325, 350, 350 + 2e-10, 350 + 5e-10, 348, 340, 335};
+  r.pves_cmh2o = {10, 11, 12, 20, 30, 32, 31, 30};
+  r.pabd_cmh2o = std::vector<double>(8, 8.0);
+  r.flow_ml_s = {0, 0, 0, 0, 0, 2, 8, 5};
+  r.voided_ml = {0, 0, 0, 0, 0, 2, 10, 15};
+  r.infused_ml = {250, 275, 300, 300, 300, 300, 300, 300};
+  const vc::RecordingAnalysis a = vc::analyse(r);
+  EXPECT_EQ(a.ics.capacity_row, 2u);
+  ASSERT_TRUE(a.ics.voiding_start_s.has_value());
+  EXPECT_DOUBLE_EQ(*a.ics.voiding_start_s - r.time_s[a.ics.capacity_row], 2.0);
+}
