@@ -22,10 +22,11 @@ constexpr double kVoidedScale = 10.0;  // ml: one reading, as heavy as a few flo
 constexpr double kOnsetScale = 2.0;
 // The ICS read-outs a urologist reports, each one number, weighed as a few readings: Qmax
 // as one flow reading (the readings around it are its plateau, which a least-squares fit of
-// the curve alone would match instead of the maximum), PdetQmax to the 2 cmH2O a voiding
-// Pdet carries of straining artefact, the flow time to a tenth of a normal one.
+// the curve alone would match instead of the maximum), PdetQmax to a cmH2O and a half (the
+// readings' whole-cmH2O rounding and the straining's transmission error; docs/compare.md
+// says how it was chosen), the flow time to a tenth of a normal one.
 constexpr double kQmaxScale = 1.0;      // ml/s
-constexpr double kPdetQmaxScale = 2.0;  // cmH2O
+constexpr double kPdetQmaxScale = 1.5;  // cmH2O
 constexpr double kFlowTimeScale = 4.0;  // s
 // A run "reaches" a volume within this (it stops at capacity to the Newton tolerance).
 constexpr double kReachToleranceMl = 0.01;

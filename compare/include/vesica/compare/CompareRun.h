@@ -21,7 +21,7 @@ struct CalibrationModel {
   double straining_kpa = 0.0;
   double detrusor_kpa = 0.0;
   bool surrogate = true;     // the two-stage fit's fast surrogate search first
-  int surrogate_starts = 4;  // starting points of the surrogate search
+  int surrogate_starts = 16;  // starting points of the surrogate search
 };
 
 struct CompareOptions {

@@ -25,7 +25,7 @@
 namespace vesica::compare {
 
 struct FitBudget {
-  int surrogate_starts = 4;
+  int surrogate_starts = 16;
   int surrogate_simulations = 4000;  // all starts and the mappings together (0-D: ms each)
   int model_simulations = 40;        // the reported model, Jacobian included
   int mapping_iterations = 4;
