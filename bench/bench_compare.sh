@@ -17,8 +17,9 @@ exe="$bin/vesica-compare"
 data="$here/tests/compare/data"
 shared="${VESICA_SHARED_DIR:-$here/../shared}"
 # The detrusor-voided default wall: its fibers from filling first, then its contractility,
-# the drive's latency and onset and the sphincter's recovery from voiding (docs/compare.md).
-calibrate="${VESICA_BENCH_CALIBRATE:-k1,k2,detrusor,activation_delay,activation_onset,urethra_recovery}"
+# the drive's latency, the sphincter's recovery and the urethra's closing pressure from voiding
+# (docs/compare.md).
+calibrate="${VESICA_BENCH_CALIBRATE:-k1,k2,detrusor,activation_delay,urethra_recovery,p_close}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
