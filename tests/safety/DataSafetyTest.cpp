@@ -56,10 +56,15 @@ bool one_line_naming(const std::string& output, const std::string& file) {
 // A complete run of every stage on a small phantom, made once and copied per test.
 class DataSafety : public ::testing::Test {
  protected:
-  static fs::path reference() { return fs::temp_directory_path() / "vesica-test-safety-ref"; }
+  // Where SetUpTestSuite made the run (the build tree's scratch folder, as every test's).
+  static fs::path& reference() {
+    static fs::path made;
+    return made;
+  }
 
   static void SetUpTestSuite() {
     const fs::path d = vesica::test::scratch_dir("safety-ref");
+    reference() = d;
     const std::string in = "cd '" + d.string() + "' && ";
     const std::string steps[] = {
         tool("vesica-phantom") + " -o ct --bladder-ml 150 --spacing-mm 4",
