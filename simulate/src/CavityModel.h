@@ -100,6 +100,10 @@ class CavityModel {
   // One timed step. Converged: the model has moved to its end. Not converged: the state is
   // as before the attempt, so that the protocol may retry a shorter step.
   virtual StepResult try_step(const StepRequest& step) = 0;
+  // A voiding step failed after all cut-backs with the urethra open: whether the model
+  // hands the rest of its voiding over to a simpler one it carries on as (level 1 to its
+  // sphere-equivalent, docs/simulate.md "The tail of voiding"), noting it; false: no.
+  virtual bool hand_over_voiding(const std::string& /*failure*/) { return false; }
   // A voiding step failed after all cut-backs: the note that ends voiding there without
   // failing the run (where the model cannot follow the wall any further), or "" to fail.
   virtual std::string voiding_end_note(const std::string& /*failure*/) const { return ""; }

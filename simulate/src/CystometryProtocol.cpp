@@ -296,6 +296,12 @@ void CystometryProtocol::void_bladder() {
     try {
       iterations = advance(dt, 0.0, urethra_open_).iterations;
     } catch (const StepFailed& e) {
+      // With the urethra open a model may go on as a simpler one (the wall's tail of
+      // voiding on its sphere-equivalent); the same step is tried again on it.
+      if (urethra_open_ && model_->hand_over_voiding(e.what())) {
+        take_notes();
+        continue;
+      }
       const std::string note = model_->voiding_end_note(e.what());
       if (note.empty()) throw;
       result_.notes.push_back(note);

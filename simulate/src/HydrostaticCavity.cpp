@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <utility>
 
 #include "WallSurroundings.h"
 #include "vesica/core/Log.h"
@@ -21,6 +23,7 @@ constexpr double kTheta = 0.5;
 HydrostaticCavity::HydrostaticCavity(const WallModel& wall, const Material& material,
                                      const ProtocolSettings& settings, const RunOptions& options)
     : wall_(wall),
+      material_(material),
       settings_(settings),
       problem_(wall, material, options.threads),
       solver_(problem_, options.newton),
@@ -61,7 +64,7 @@ bool HydrostaticCavity::attempt(double dt, const ProtocolLoads& loads, const Ure
   loads_.drag_stiffness = drag_dt > 0.0 ? settings_.wall_drag_pa_s_per_m / drag_dt : 0.0;
   loads_.drag_anchor = x_saved;
   if (dynamics_) loads_.inertia = dynamics_->inertia(x_saved, dt);
-  predict(dt);
+  predict(dt, loads.activation > 0.0);
   CavityEquation cavity;
   cavity.volume_control = true;
   cavity.volume_base_m3 = V_target_no_flow - (urethra ? (1.0 - kTheta) * dt * q_out_ : 0.0);
@@ -117,8 +120,9 @@ void HydrostaticCavity::log_step(double dt, const ProtocolLoads& loads,
 // iterations instead of 3. Only on a smooth path: where the last step was hard (a slack
 // wall wrinkling) its velocity says little about the next one, and extrapolating it
 // starts Newton further away. At most twice the last step, like the step growth.
-void HydrostaticCavity::predict(double dt) {
-  if (!(dt > 0.0 && dt_before_ > 0.0 && smooth_) || x_before_.size() != x_.size()) return;
+void HydrostaticCavity::predict(double dt, bool contracting) {
+  if (!(dt > 0.0 && dt_before_ > 0.0 && (smooth_ || contracting)) || x_before_.size() != x_.size())
+    return;
   const double r = std::min(dt / dt_before_, 2.0);
   for (std::size_t n = 0; n < x_.size(); ++n) x_[n] += r * (x_[n] - x_before_[n]);
   loads_.inside.p0 += r * (loads_.inside.p0 - p_before_);
@@ -169,6 +173,7 @@ void HydrostaticCavity::urethra_opens(const UrethraLaw& urethra) {
 }
 
 StepResult HydrostaticCavity::try_step(const StepRequest& step) {
+  if (tail_) return tail_step(step);
   const double V_target = V0_ + step.infused_m3 + step.dt_s * step.inflow_m3_s - step.voided_m3;
   int iterations = 0;
   double voided = 0.0;
@@ -197,7 +202,78 @@ void HydrostaticCavity::continue_from(const std::vector<Eigen::Vector3d>& x,
 }
 
 std::vector<MembraneStressOutput> HydrostaticCavity::wall_stresses() const {
+  if (tail_) return tail_->wall_stresses();
   return problem_.element_outputs(x_, loads_);
+}
+
+// The wall's last converged state goes on as the sphere-equivalent's: the same volume, the
+// same bookkeeping base, the fibers' last shortening rate, and its Pdet scaled to the
+// wall's. The protocol then steps the tail as it stepped the wall.
+bool HydrostaticCavity::hand_over_voiding(const std::string& failure) {
+  if (tail_ || !(dt_before_ > 0.0) || x_before_.size() != x_.size()) return false;
+  LumpedCavity::WallState state;
+  state.volume_m3 = volume_;
+  state.pdet_pa = loads_.inside.p0 - committed_loads_.pabd_pa;
+  state.pabd_pa = committed_loads_.pabd_pa;
+  state.outflow_m3_s = q_out_;
+  state.start_volume_m3 = V0_;
+  state.volume_before_m3 = enclosed_volume(wall_, x_before_);
+  state.dt_s = dt_before_;
+  state.activation = committed_loads_.activation;
+  auto tail = std::make_unique<LumpedCavity>(wall_, material_, settings_);
+  try {
+    tail_pressure_scale_ = tail->take_over(state);
+  } catch (const std::runtime_error& e) {
+    vesica::log()->debug("no hand-over to the sphere-equivalent: {}", e.what());
+    return false;
+  }
+  tail_ = std::move(tail);
+  x_handed_ = x_;
+  V_handed_ = volume_;
+  handed_because_ = failure;
+  std::ostringstream note;
+  note.precision(4);
+  note << "the wall could not take a voiding step at V = " << units::ml_from_m3(volume_) << " ml ("
+       << failure << "); from there the voiding ran on its sphere-equivalent "
+       << "(level 0), its pressure scaled by " << tail_pressure_scale_ << " to the wall's";
+  notes_.push_back(note.str());
+  vesica::log()->warn("{}", notes_.back());
+  return true;
+}
+
+StepResult HydrostaticCavity::tail_step(const StepRequest& step) {
+  StepResult r = tail_->try_step(step);
+  if (!r.converged) return r;
+  volume_ = tail_->volume();
+  loads_.inside.p0 = tail_->pves();
+  q_out_ = tail_->outflow();
+  committed_loads_ = step.loads;
+  return r;
+}
+
+// After the hand-over: the wall as it was handed over, scaled about its mean node by the
+// tail's volume ratio (the frames show the volume, not a computed wall).
+std::vector<Eigen::Vector3d> HydrostaticCavity::wall_positions() const {
+  if (!tail_) return x_;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const auto& p : x_handed_) centre += p;
+  centre /= static_cast<double>(x_handed_.size());
+  const double s = std::cbrt(std::max(volume_, 0.0) / V_handed_);
+  std::vector<Eigen::Vector3d> x(x_handed_);
+  for (auto& p : x) p = centre + s * (p - centre);
+  return x;
+}
+
+void HydrostaticCavity::add_summary(nlohmann::json& summary) const {
+  if (!tail_) return;
+  summary["voiding_tail"] = {{"model", "sphere-equivalent (level 0)"},
+                             {"from_ml", units::ml_from_m3(V_handed_)},
+                             {"pressure_scale", tail_pressure_scale_},
+                             {"wall_failure", handed_because_}};
+}
+
+std::vector<std::string> HydrostaticCavity::take_notes() {
+  return std::exchange(notes_, {});
 }
 
 }  // namespace vesica::simulate

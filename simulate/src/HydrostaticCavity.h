@@ -15,6 +15,7 @@
 
 #include "BossakNewmark.h"
 #include "CavityModel.h"
+#include "LumpedCavity.h"
 #include "MembraneProblem.h"
 #include "NewtonSolver.h"
 #include "StepStatistics.h"
@@ -43,6 +44,10 @@ class HydrostaticCavity final : public CavityModel {
   // committed history, under loads.
   void continue_from(const std::vector<Eigen::Vector3d>& x, const MembraneProblem& wall_state,
                      const Takeover& state, const ProtocolLoads& loads);
+  // A voiding step the wall cannot take: the rest of voiding runs on the wall's
+  // sphere-equivalent (LumpedCavity, level 0) from the wall's state, its pressure matched
+  // to the wall's; the note and the summary's "voiding_tail" say from where.
+  bool hand_over_voiding(const std::string& failure) override;
   // Below the stress-free volume a failed voiding step ends voiding: the wall is slack
   // there and its tension field may have no solution (docs/simulate.md).
   std::string voiding_end_note(const std::string& failure) const override;
@@ -52,9 +57,11 @@ class HydrostaticCavity final : public CavityModel {
   double outflow() const override { return q_out_; }
   double reference_volume() const override { return V_reference_; }
   const WallModel& wall() const override { return wall_; }
-  std::vector<Eigen::Vector3d> wall_positions() const override { return x_; }
+  std::vector<Eigen::Vector3d> wall_positions() const override;
   std::vector<MembraneStressOutput> wall_stresses() const override;
   nlohmann::json statistics() const override { return statistics_.json(); }
+  void add_summary(nlohmann::json& summary) const override;
+  std::vector<std::string> take_notes() override;
 
   // Checkpoints (HydrostaticCavityState.cpp): the wall, its history and dynamics, the
   // pressure and bookkeeping, and what the solver carries to the next step.
@@ -66,13 +73,15 @@ class HydrostaticCavity final : public CavityModel {
   // One Newton solve to the step's end; restores the state when it does not converge.
   bool attempt(double dt, const ProtocolLoads& loads, const UrethraLaw* urethra,
                double V_target_no_flow, int& iterations, double& voided);
-  void predict(double dt);
+  void predict(double dt, bool contracting);
   void log_step(double dt, const ProtocolLoads& loads, const NewtonReport& report) const;
   void set_loads(const ProtocolLoads& loads);
   StepResult accepted(int iterations, double voided);
   StepResult failed(int iterations);
+  StepResult tail_step(const StepRequest& step);
 
   const WallModel& wall_;
+  const Material& material_;
   const ProtocolSettings& settings_;
   MembraneProblem problem_;
   NewtonSolver solver_;
@@ -91,6 +100,13 @@ class HydrostaticCavity final : public CavityModel {
   // before it.
   StepStatistics statistics_;
   int failed_attempts_ = 0;  // since the last converged step
+  // The tail of voiding (hand_over_voiding): the model that carries it, the wall where it
+  // was handed over (its frames are that wall scaled to the tail's volume), and why.
+  std::unique_ptr<LumpedCavity> tail_;
+  std::vector<Eigen::Vector3d> x_handed_;
+  double V_handed_ = 0.0, tail_pressure_scale_ = 1.0;
+  std::string handed_because_;
+  std::vector<std::string> notes_;
 };
 
 }  // namespace vesica::simulate

@@ -54,7 +54,25 @@ double LumpedCavity::wall_pressure(double V, double dt, double activation) {
                                                       history_.data(), trial_history_.data())
                                : plane_stress(material_, C2, point, state_.J2, history_.data(),
                                               trial_history_.data());
-  return 2.0 * trial_.S(0, 0) * H_ / (R_ * lambda);
+  return pressure_scale_ * 2.0 * trial_.S(0, 0) * H_ / (R_ * lambda);
+}
+
+double LumpedCavity::take_over(const WallState& wall) {
+  V0_ = wall.start_volume_m3;
+  pabd_ = wall.pabd_pa;
+  q_out_ = wall.outflow_m3_s;
+  pressure_scale_ = 1.0;
+  history_.assign(material_.history_size(), 0.0);
+  trial_history_ = history_;
+  wall_pressure(wall.volume_before_m3, kRelaxedStep, wall.activation);
+  accept(wall.volume_before_m3);
+  const double own = wall_pressure(wall.volume_m3, wall.dt_s, wall.activation);
+  accept(wall.volume_m3);
+  constexpr double kLargestScale = 4.0;
+  if (own > 0.0 && wall.pdet_pa > 0.0)
+    pressure_scale_ = std::clamp(wall.pdet_pa / own, 1.0 / kLargestScale, kLargestScale);
+  pdet_ = pressure_scale_ * own;
+  return pressure_scale_;
 }
 
 StepResult LumpedCavity::accept(double V) {

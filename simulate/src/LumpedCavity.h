@@ -44,6 +44,25 @@ class LumpedCavity final : public CavityModel {
   nlohmann::json statistics() const override { return statistics_.json(); }
   void add_summary(nlohmann::json& summary) const override;
 
+  // Where a wall (level 1) stands when it hands the rest of its voiding over to this model
+  // (HydrostaticCavity::hand_over_voiding; docs/simulate.md, "The tail of voiding").
+  struct WallState {
+    double volume_m3 = 0.0;         // the wall's volume now
+    double pdet_pa = 0.0;           // and its transmural pressure
+    double pabd_pa = 0.0;           // the abdominal pressure of its last step
+    double outflow_m3_s = 0.0;      // through the urethra now
+    double start_volume_m3 = 0.0;   // when the clock started: the protocol's bookkeeping base
+    double volume_before_m3 = 0.0;  // before the wall's last step, which took
+    double dt_s = 0.0;              // this long
+    double activation = 0.0;        // under this activation
+  };
+  // Continues from that state: the sphere's history is the relaxed one at the volume
+  // before the wall's last step, then that step (the fibers' shortening rate of the
+  // wall's last step for the Hill relation), and its pressure is scaled from then on by the
+  // wall's Pdet over its own (the shape factor of a wall that is not a sphere, clamped to
+  // [1/4, 4]; 1 where its own is not positive). Returns the scale.
+  double take_over(const WallState& wall);
+
   // The sphere-equivalent's reference radius (m) and thickness (m).
   double radius() const { return R_; }
   double thickness() const { return H_; }
@@ -64,6 +83,7 @@ class LumpedCavity final : public CavityModel {
   double R_ = 0.0, H_ = 0.0, V_reference_ = 0.0;
   Eigen::Vector3d centroid_ = Eigen::Vector3d::Zero();
   double volume_ = 0.0, V0_ = 0.0, pdet_ = 0.0, pabd_ = 0.0, q_out_ = 0.0;
+  double pressure_scale_ = 1.0;  // take_over's shape factor
   // The point's history: committed, and of the last trial evaluation.
   std::vector<double> history_, trial_history_;
   PlaneStressState state_, trial_;
