@@ -93,6 +93,7 @@ ModelRun run_once(const CystometryModel& m) {
   run.recording = recording_from_history(result.history);
   run.completed = result.completed;
   run.failure = result.failure;
+  run.notes = result.notes;
   return run;
 }
 

@@ -389,6 +389,8 @@ void report_optimum(const FitProblem& pb, FitObjective& model, FitObjective* sur
         : undetermined(pb.parameters, "no Jacobian: the simulation budget is spent");
   fill_parameters(pb.parameters, values, u, r);
   out.final_run = pb.final_model ? pb.final_model(values) : model.at(best)->run;
+  // What the fitted model's own run says of itself (a wall that handed its voiding over).
+  for (const auto& note : out.final_run.notes) r.notes.push_back("the fitted model's run: " + note);
   const Evaluation final_eval = evaluate(pb.targets, out.final_run);
   fill_series(pb.targets, final_eval.failed ? at_best : final_eval, r);
   if (!out.final_run.completed || final_eval.failed) {

@@ -191,10 +191,11 @@ TEST(Calibration, VoidingParametersWithoutAVoidingInTheRecordingAreRefused) {
 // mapping with a few runs of the wall. Targets: filling RMSE <= 1 cmH2O and below the
 // straight line; Qmax within 10 % of 17 ml/s; flow time within 20 % of the measured 39 s;
 // voided volume within 5 % of 350 ml; PdetQmax within 3 cmH2O of 5; Q(t) correlation >= 0.9
-// after aligning the onsets. Still disabled: the wall does not yet run the surrogate's best
-// optimum through the end of voiding (docs/compare.md, calibration of the shared
-// recording); run it with --gtest_also_run_disabled_tests.
-TEST(Calibration, DISABLED_TheWholeRecordingMeetsTheAcceptanceTargetsOnTheCtWall) {
+// after aligning the onsets. Where the wall cannot take a late voiding step (a few
+// elements of the CT wall chattering between taut, wrinkled and slack near its stress-free
+// volume) its sphere-equivalent carries the rest of voiding, and the fit's notes say so
+// (docs/simulate.md, "The tail of voiding").
+TEST(Calibration, TheWholeRecordingMeetsTheAcceptanceTargetsOnTheCtWall) {
   VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
   const fs::path dir = scratch_dir("compare-calibration-acceptance");
   const auto s =
@@ -223,4 +224,17 @@ TEST(Calibration, DISABLED_TheWholeRecordingMeetsTheAcceptanceTargetsOnTheCtWall
   EXPECT_NEAR(simulated("pdet_qmax_cmh2o"), 5, 3);
   EXPECT_GE(v["flow_correlation_aligned_onsets"].get<double>(), 0.9);
   expect_honest_parameters(c);
+  // Every parameter moved by the data, with an interval around it.
+  for (const auto& p : c["parameters"]) EXPECT_TRUE(p["identifiable"].get<bool>()) << p;
+  EXPECT_NE(c["status"].get<std::string>().rfind("failed", 0), 0u) << c["status"];
+  // The wall itself voids at least nine tenths of the 349 ml: a hand-over to its
+  // sphere-equivalent, if any, is the tail (the note names the volume).
+  const std::string handed =
+      "the fitted model's run: the wall could not take a voiding step at V = ";
+  for (const auto& n : c["notes"]) {
+    const std::string note = n.get<std::string>();
+    if (note.rfind(handed, 0) != 0) continue;
+    std::cout << note << "\n";
+    EXPECT_LT(std::stod(note.substr(handed.size())), 35.0) << note;
+  }
 }

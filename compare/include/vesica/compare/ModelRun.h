@@ -12,9 +12,10 @@
 namespace vesica::compare {
 
 struct ModelRun {
-  Recording recording;     // the run's history (time, volumes, pressures, flow)
-  bool completed = false;  // reached the end of its protocol
-  std::string failure;     // why not ("step failed at t = .. s, V = .. ml: ...")
+  Recording recording;             // the run's history (time, volumes, pressures, flow)
+  bool completed = false;          // reached the end of its protocol
+  std::string failure;             // why not ("step failed at t = .. s, V = .. ml: ...")
+  std::vector<std::string> notes;  // the simulation's notes (e.g. a tail of voiding at level 0)
 };
 
 using ModelSimulator = std::function<ModelRun(const std::vector<double>& values)>;
