@@ -117,9 +117,12 @@ void HydrostaticCavity::log_step(double dt, const ProtocolLoads& loads,
 // pressure): the tissue drag resists the wall's velocity, so from the last state
 // (velocity zero) the first residual is the whole drag force of the last step; from the
 // extrapolated one only its change is left, and a taut wall's step converges in 2
-// iterations instead of 3. Only on a smooth path: where the last step was hard (a slack
-// wall wrinkling) its velocity says little about the next one, and extrapolating it
-// starts Newton further away. At most twice the last step, like the step growth.
+// iterations instead of 3. On a smooth path, or while the detrusor contracts: where the
+// last step was hard (a slack wall wrinkling) its velocity says little about the next one
+// and extrapolating it starts Newton further away, except that a contracting wall's Hill
+// factor depends on that velocity, and from velocity zero (factor 1) every step, however
+// short, starts far from its solution (physics.md §3.7). At most twice the last step,
+// like the step growth.
 void HydrostaticCavity::predict(double dt, bool contracting) {
   if (!(dt > 0.0 && dt_before_ > 0.0 && (smooth_ || contracting)) || x_before_.size() != x_.size())
     return;
