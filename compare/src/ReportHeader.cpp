@@ -104,6 +104,11 @@ std::string model_card(const ReportInputs& in) {
     if (s.level)
       o << row("Urine model",
                *s.level == 2 ? "level 2: Navier&ndash;Stokes" : "level 1: hydrostatic volume");
+    if (s.voiding_tail_from_ml)
+      o << row("Tail of voiding",
+               "from " + number(*s.voiding_tail_from_ml) +
+                   " ml on, the wall's sphere-equivalent (level 0): the wall could not take a "
+                   "voiding step there (docs/simulate.md)");
     if (!s.version.empty())
       o << row("Simulated by",
                "vesica " + xml_escape(s.version) +

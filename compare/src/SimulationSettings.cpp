@@ -166,6 +166,8 @@ SimulationSettings read_simulation_settings(const fs::path& history) {
     s.r1_cmh2o_s_per_ml = number(summary["outlet"], "r1_cmh2o_s_per_ml");
     s.r2_cmh2o_s2_per_ml2 = number(summary["outlet"], "r2_cmh2o_s2_per_ml2");
   }
+  if (summary.contains("voiding_tail") && summary["voiding_tail"].is_object())
+    s.voiding_tail_from_ml = number(summary["voiding_tail"], "from_ml");
   if (fs::exists(history)) s.manifest = find_manifest(history);
   if (s.manifest.empty()) return s;
   const nlohmann::json m = read_json(s.manifest);
@@ -212,6 +214,7 @@ nlohmann::json to_json(const SimulationSettings& s) {
           {"nodes", opt(s.nodes)},
           {"mean_edge_mm", opt(s.mean_edge_mm)},
           {"level", opt(s.level)},
+          {"voiding_tail_from_ml", opt(s.voiding_tail_from_ml)},
           {"version", s.version},
           {"finished_utc", s.finished_utc}};
 }

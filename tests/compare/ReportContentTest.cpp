@@ -133,8 +133,10 @@ TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
         << ",60," << 60 * k << '\n';
   }
   std::ofstream(dir / "sim/summary.json")
-      << R"({"version": "0.1.0", "triangles": 1710, "nodes": 857,
-             "outlet": {"p_open_cmh2o": 20, "r1_cmh2o_s_per_ml": 0.2, "r2_cmh2o_s2_per_ml2": 0.05}})";
+      << R"json({"version": "0.1.0", "triangles": 1710, "nodes": 857,
+             "outlet": {"p_open_cmh2o": 20, "r1_cmh2o_s_per_ml": 0.2, "r2_cmh2o_s2_per_ml2": 0.05},
+             "voiding_tail": {"model": "sphere-equivalent (level 0)", "from_ml": 50,
+                              "pressure_scale": 0.9, "wall_failure": "no convergence"}})json";
   const nlohmann::json manifest = {
       {"tool", "vesica-simulate"},
       {"finished_utc", "2026-01-02T03:04:05Z"},
@@ -169,4 +171,8 @@ TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
   EXPECT_NE(r.html.find("voiding by abdominal straining"), std::string::npos);
   EXPECT_NE(r.html.find("neo-Hookean"), std::string::npos);
   EXPECT_NE(r.html.find("1710 wall triangles"), std::string::npos);
+  // The wall handed the last 50 ml of its voiding to its sphere-equivalent: the reader is told.
+  EXPECT_EQ(s["voiding_tail_from_ml"], 50.0);
+  EXPECT_NE(r.html.find("from 50 ml on, the wall's sphere-equivalent (level 0)"),
+            std::string::npos);
 }

@@ -28,6 +28,9 @@ struct SimulationSettings {
   std::optional<long> triangles, nodes;
   std::optional<double> mean_edge_mm;
   std::optional<int> level;
+  // Where a level-1 wall handed the rest of its voiding to its sphere-equivalent (summary
+  // key voiding_tail; docs/simulate.md, "The tail of voiding"); none: the wall voided it all.
+  std::optional<double> voiding_tail_from_ml;
   std::string version, finished_utc;
 
   // "abdominal straining 4 kPa (40.8 cmH2O)", "detrusor contraction 20 kPa", both, or
