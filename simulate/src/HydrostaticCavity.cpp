@@ -225,7 +225,7 @@ bool HydrostaticCavity::hand_over_voiding(const std::string& failure) {
   state.activation = committed_loads_.activation;
   auto tail = std::make_unique<LumpedCavity>(wall_, material_, settings_);
   try {
-    tail_pressure_scale_ = tail->take_over(state);
+    tail->take_over(state);
   } catch (const std::runtime_error& e) {
     vesica::log()->debug("no hand-over to the sphere-equivalent: {}", e.what());
     return false;
@@ -238,7 +238,7 @@ bool HydrostaticCavity::hand_over_voiding(const std::string& failure) {
   note.precision(4);
   note << "the wall could not take a voiding step at V = " << units::ml_from_m3(volume_) << " ml ("
        << failure << "); from there the voiding ran on its sphere-equivalent "
-       << "(level 0), its pressure scaled by " << tail_pressure_scale_ << " to the wall's";
+       << "(level 0), its pressure scaled by " << tail_->pressure_scale() << " to the wall's";
   notes_.push_back(note.str());
   vesica::log()->warn("{}", notes_.back());
   return true;
@@ -271,7 +271,7 @@ void HydrostaticCavity::add_summary(nlohmann::json& summary) const {
   if (!tail_) return;
   summary["voiding_tail"] = {{"model", "sphere-equivalent (level 0)"},
                              {"from_ml", units::ml_from_m3(V_handed_)},
-                             {"pressure_scale", tail_pressure_scale_},
+                             {"pressure_scale", tail_->pressure_scale()},
                              {"wall_failure", handed_because_}};
 }
 

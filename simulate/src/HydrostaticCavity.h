@@ -104,7 +104,7 @@ class HydrostaticCavity final : public CavityModel {
   // was handed over (its frames are that wall scaled to the tail's volume), and why.
   std::unique_ptr<LumpedCavity> tail_;
   std::vector<Eigen::Vector3d> x_handed_;
-  double V_handed_ = 0.0, tail_pressure_scale_ = 1.0;
+  double V_handed_ = 0.0;
   std::string handed_because_;
   std::vector<std::string> notes_;
 };

@@ -57,7 +57,7 @@ double LumpedCavity::wall_pressure(double V, double dt, double activation) {
   return pressure_scale_ * 2.0 * trial_.S(0, 0) * H_ / (R_ * lambda);
 }
 
-double LumpedCavity::take_over(const WallState& wall) {
+void LumpedCavity::take_over(const WallState& wall) {
   V0_ = wall.start_volume_m3;
   pabd_ = wall.pabd_pa;
   q_out_ = wall.outflow_m3_s;
@@ -72,7 +72,6 @@ double LumpedCavity::take_over(const WallState& wall) {
   if (own > 0.0 && wall.pdet_pa > 0.0)
     pressure_scale_ = std::clamp(wall.pdet_pa / own, 1.0 / kLargestScale, kLargestScale);
   pdet_ = pressure_scale_ * own;
-  return pressure_scale_;
 }
 
 StepResult LumpedCavity::accept(double V) {

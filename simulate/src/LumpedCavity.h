@@ -60,8 +60,9 @@ class LumpedCavity final : public CavityModel {
   // before the wall's last step, then that step (the fibers' shortening rate of the
   // wall's last step for the Hill relation), and its pressure is scaled from then on by the
   // wall's Pdet over its own (the shape factor of a wall that is not a sphere, clamped to
-  // [1/4, 4]; 1 where its own is not positive). Returns the scale.
-  double take_over(const WallState& wall);
+  // [1/4, 4]; 1 where either is not positive): pressure_scale().
+  void take_over(const WallState& wall);
+  double pressure_scale() const { return pressure_scale_; }  // take_over's; 1 before it
 
   // The sphere-equivalent's reference radius (m) and thickness (m).
   double radius() const { return R_; }
