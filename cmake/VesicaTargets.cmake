@@ -1,5 +1,6 @@
 # Helpers that give every vesica target the same warnings, conventions and install rules.
 include(GNUInstallDirs)
+include(GoogleTest)
 
 # Warnings apply to our own sources only; third-party headers are SYSTEM includes.
 function(vesica_warnings target)
@@ -69,19 +70,142 @@ function(vesica_executable name)
   endif()
 endfunction()
 
-# vesica_test(NAME SOURCES... DEPS ... [LABELS ...] [TIMEOUT s]): one GoogleTest binary,
-# registered as one ctest test (fast start, one process) with the shared-data folder and
-# the binary folder in its environment.
+# The test tiers: every ctest entry carries exactly one of these labels (docs/CONVENTIONS.md,
+# "Tests"). unit is the quick loop (`make check`); `make test` runs them all.
+set(VESICA_TEST_TIERS unit acceptance fuzz install)
+
+# vesica_tier_labels(OUT LABEL...): the labels, with unit added when they name no tier.
+function(vesica_tier_labels out)
+  set(labels ${ARGN})
+  set(tiers ${labels})
+  list(FILTER tiers INCLUDE REGEX "^(unit|acceptance|fuzz|install)$")
+  list(LENGTH tiers count)
+  if(count EQUAL 0)
+    list(APPEND labels unit)
+  elseif(count GREATER 1)
+    message(FATAL_ERROR "labels ${labels} name more than one tier of ${VESICA_TEST_TIERS}")
+  endif()
+  set(${out} "${labels}" PARENT_SCOPE)
+endfunction()
+
+# vesica_test(NAME SOURCES... DEPS ... [LABELS ...] [ACCEPTANCE_SUITES Suite...]
+#             [ONE_PROCESS Suite...] [TIMEOUT s] [COST c] [PROCESSORS n]): one GoogleTest
+# binary. Each of its cases is its own ctest entry NAME.Suite.Case, listed from the binary
+# after it links (gtest_discover_tests), so that `ctest -j` keeps every core busy and a
+# failure names its case.
+#   LABELS      the binary's tier (unit when none is named) and any others (its stage).
+#   ACCEPTANCE_SUITES  suites of a unit binary whose cases are acceptance tests instead
+#               (the real CT, physiology, level 2, calibration, whole pipelines).
+#   ONE_PROCESS suites that build something once for all their cases (SetUpTestSuite, a
+#               static reference run): each stays one entry NAME.Suite, one process, so
+#               that the work is neither repeated nor raced for by cases run at once.
+#   TIMEOUT     seconds for one entry (600 when not given).
+#   COST        a rough duration of one entry in seconds (acceptance: 10 when not given):
+#               ctest starts costly entries first until it has timed them once itself.
+#   PROCESSORS  cores one entry keeps busy (a case that runs two stages at once says 2).
 function(vesica_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT;COST;PROCESSORS"
+    "SOURCES;DEPS;LABELS;ACCEPTANCE_SUITES;ONE_PROCESS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
   vesica_warnings(${name})
-  add_test(NAME ${name} COMMAND ${name})
+
+  vesica_tier_labels(labels ${ARG_LABELS})
+  set(acceptance_labels ${labels})
+  list(TRANSFORM acceptance_labels REPLACE "^unit$" acceptance)
+  set(cost ${ARG_COST})
+  set(acceptance_cost ${ARG_COST})
+  if(NOT ARG_COST)
+    set(acceptance_cost 10)
+    if("acceptance" IN_LIST labels)
+      set(cost 10)
+    endif()
+  endif()
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 600)
   endif()
-  set_tests_properties(${name} PROPERTIES TIMEOUT ${ARG_TIMEOUT}
-    LABELS "${ARG_LABELS}"
-    ENVIRONMENT "VESICA_SHARED_DIR=${VESICA_SHARED_DIR};VESICA_BIN_DIR=${CMAKE_BINARY_DIR}/bin;VESICA_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+  # Where the test finds the shared real data, the built executables and the sources
+  # (tests/support/TestData.h).
+  set(environment "VESICA_SHARED_DIR=${VESICA_SHARED_DIR}" "VESICA_BIN_DIR=${CMAKE_BINARY_DIR}/bin"
+    "VESICA_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
+  set(processors ${ARG_PROCESSORS})
+  if(NOT processors)
+    set(processors 1)
+  endif()
+  set(common TIMEOUT ${ARG_TIMEOUT} PROCESSORS ${processors})
+
+  set(one_process "")
+  foreach(suite ${ARG_ONE_PROCESS})
+    add_test(NAME ${name}.${suite} COMMAND ${name} --gtest_filter=${suite}.*)
+    if(suite IN_LIST ARG_ACCEPTANCE_SUITES)
+      set_tests_properties(${name}.${suite} PROPERTIES LABELS "${acceptance_labels}"
+        ENVIRONMENT "${environment}" COST ${acceptance_cost} ${common})
+    else()
+      set_tests_properties(${name}.${suite} PROPERTIES LABELS "${labels}"
+        ENVIRONMENT "${environment}" ${common})
+      if(cost)
+        set_tests_properties(${name}.${suite} PROPERTIES COST ${cost})
+      endif()
+    endif()
+    list(APPEND one_process "${suite}.*")
+  endforeach()
+  set(filter "")
+  if(one_process)
+    list(JOIN one_process ":" joined)
+    set(filter TEST_FILTER "-${joined}")
+  endif()
+  # NO_PRETTY_VALUES: a case named after its parameter keeps that name, without the printed
+  # bytes of the parameter.
+  gtest_discover_tests(${name} TEST_PREFIX ${name}. ${filter} TEST_LIST ${name}_cases
+    NO_PRETTY_VALUES DISCOVERY_TIMEOUT 60)
+
+  # The discovered cases get their properties from a file that ctest reads after their list
+  # (gtest_discover_tests' own PROPERTIES cannot carry a list: the labels, the environment),
+  # so that the tier can be chosen suite by suite.
+  list(JOIN common " " common)
+  set(cost_property "")
+  if(cost)
+    set(cost_property "COST ${cost}")
+  endif()
+  # The one-process suites have no discovered case.
+  set(acceptance_suites_list ${ARG_ACCEPTANCE_SUITES})
+  if(ARG_ONE_PROCESS)
+    list(REMOVE_ITEM acceptance_suites_list ${ARG_ONE_PROCESS})
+  endif()
+  list(JOIN acceptance_suites_list " " acceptance_suites_list)
+  file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/${name}_case_properties.cmake
+    CONTENT [=[
+# Generated by vesica_test (cmake/VesicaTargets.cmake) for @name@; ctest reads it after
+# the case list @name@_cases. LABELS adds to a test's labels: each case gets them once.
+set(acceptance_cases "")
+set(other_cases "")
+# A suite named in ACCEPTANCE_SUITES that has no case (misspelt, renamed) fails a test of
+# its own rather than leaving its cases in the wrong tier unnoticed.
+set(unmatched @acceptance_suites_list@)
+foreach(case IN LISTS @name@_cases)
+  set(tier_of_case other_cases)
+  foreach(suite IN ITEMS @acceptance_suites_list@)
+    if(case MATCHES "^@name@\\.([^.]*/)?${suite}\\.")
+      set(tier_of_case acceptance_cases)
+      list(REMOVE_ITEM unmatched ${suite})
+    endif()
+  endforeach()
+  list(APPEND ${tier_of_case} "${case}")
+endforeach()
+if(other_cases)
+  set_tests_properties(${other_cases} PROPERTIES LABELS "@labels@"
+    ENVIRONMENT "@environment@" @common@ @cost_property@)
+endif()
+if(acceptance_cases)
+  set_tests_properties(${acceptance_cases} PROPERTIES LABELS "@acceptance_labels@"
+    ENVIRONMENT "@environment@" @common@ COST @acceptance_cost@)
+endif()
+foreach(suite IN LISTS unmatched)
+  add_test(@name@.ACCEPTANCE_SUITES_names_no_suite_${suite} /bin/false)
+  set_tests_properties(@name@.ACCEPTANCE_SUITES_names_no_suite_${suite} PROPERTIES
+    LABELS "@labels@")
+endforeach()
+]=] @ONLY)
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES
+    ${CMAKE_CURRENT_BINARY_DIR}/${name}_case_properties.cmake)
 endfunction()

@@ -6,6 +6,8 @@ earlier one ran.
 Usage:
   inventory.py list BUILD [--assertions LOG]   one JSON document on stdout
   inventory.py compare BEFORE.json AFTER.json  JSON on stdout; exit 1 when something is lost
+  inventory.py tiers BUILD                     exit 1, naming them, when entries do not carry
+                                               exactly one tier label
 
 `list` reads the entries from `ctest --show-only=json-v1` (no test runs) and the cases from
 each GoogleTest binary's --gtest_list_tests. A case counts as run by an entry whose command
@@ -165,6 +167,13 @@ def main(argv):
         json.dump(list_build(os.path.abspath(argv[1]), log), sys.stdout, indent=1)
         print()
         return 0
+    if len(argv) == 2 and argv[0] == "tiers":
+        entries = ctest_entries(os.path.abspath(argv[1]))
+        wrong = [e["name"] for e in entries if not tier_of(e)]
+        for name in wrong:
+            print(f"{name}: labels carry no tier or several of {', '.join(TIERS)}")
+        print(f"{len(entries) - len(wrong)} of {len(entries)} ctest entries carry one tier")
+        return 1 if wrong else 0
     if len(argv) == 3 and argv[0] == "compare":
         with open(argv[1]) as a, open(argv[2]) as b:
             doc, ok = compare(json.load(a), json.load(b))
