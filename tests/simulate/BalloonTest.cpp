@@ -10,10 +10,10 @@
 
 #include <cmath>
 
-#include "MembraneProblem.h"
-#include "NewtonSolver.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "wall/MembraneProblem.h"
+#include "solver/NewtonSolver.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica::simulate;
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "PlaneStress.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "wall/PlaneStress.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
 
 using namespace vesica::simulate;
 

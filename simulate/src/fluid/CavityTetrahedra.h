@@ -5,7 +5,7 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/WallModel.h"
+#include "vesica/simulate/wall/WallModel.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
 
 namespace vesica::simulate::fluid {

@@ -1,6 +1,6 @@
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
 
-#include "../SeriesFrames.h"
+#include "protocol/SeriesFrames.h"
 #include "fluid/FlowStructures.h"
 #include "vesica/core/Units.h"
 

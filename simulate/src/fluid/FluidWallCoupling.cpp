@@ -10,8 +10,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 
-#include "LinearSolver.h"
-#include "PressureLoad.h"
+#include "solver/LinearSolver.h"
+#include "wall/PressureLoad.h"
 #include "fluid/CavityTetrahedra.h"
 #include "fluid/DivergenceFreeProjection.h"
 #include "fluid/FluidProblem.h"

@@ -25,9 +25,9 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "MembraneProblem.h"
-#include "NewtonLoop.h"
-#include "PressureLoad.h"
+#include "wall/MembraneProblem.h"
+#include "solver/NewtonLoop.h"
+#include "wall/PressureLoad.h"
 #include "fluid/CoupledLinearSolver.h"
 #include "fluid/FluidBoundary.h"
 #include "fluid/FluidModel.h"

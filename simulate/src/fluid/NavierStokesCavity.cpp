@@ -7,7 +7,7 @@
 #include <exception>
 #include <utility>
 
-#include "WallSurroundings.h"
+#include "wall/WallSurroundings.h"
 #include "fluid/BoundaryFaces.h"
 #include "fluid/MeshMotion.h"
 #include "fluid/TetQuality.h"

@@ -6,10 +6,10 @@
 // Pa, volumes in m³.
 #include <stdexcept>
 
-#include "Checkpoint.h"
-#include "WallSurroundings.h"
+#include "protocol/Checkpoint.h"
+#include "wall/WallSurroundings.h"
 #include "fluid/NavierStokesCavity.h"
-#include "vesica/simulate/CheckpointFile.h"
+#include "vesica/simulate/protocol/CheckpointFile.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
 
 namespace vesica::simulate::fluid {

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "vesica/compare/Artefacts.h"
-#include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/RecordingAnalysis.h"
+#include "vesica/compare/recording/Artefacts.h"
+#include "vesica/compare/analysis/ModelComparison.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/core/StageMain.h"
 
 namespace vesica::compare {
