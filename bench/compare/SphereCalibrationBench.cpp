@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/compare/calibration/Calibration.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/Calibration.h"
 #include "vesica/simulate/wall/SphereMesh.h"
 
 namespace vc = vesica::compare;

@@ -11,12 +11,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "wall/MembraneProblem.h"
 #include "solver/NewtonSolver.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/wall/SphereMesh.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica;
 using namespace vesica::simulate;

@@ -21,9 +21,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/compare/calibration/Calibration.h"
 #include "vesica/compare/analysis/PiecewiseLinear.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/Calibration.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/RecordingReader.h"
 #include "vesica/simulate/protocol/Cystometry.h"

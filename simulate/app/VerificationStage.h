@@ -5,8 +5,8 @@
 
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
-#include "vesica/simulate/materials/Material.h"
 #include "vesica/simulate/SimulateSettings.h"
+#include "vesica/simulate/materials/Material.h"
 #include "vesica/simulate/wall/WallModel.h"
 
 namespace vesica::simulate {

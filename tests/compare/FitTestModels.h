@@ -6,9 +6,9 @@
 #include <functional>
 #include <vector>
 
+#include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/calibration/CalibrationTargets.h"
 #include "vesica/compare/calibration/ModelRun.h"
-#include "vesica/compare/analysis/RecordingAnalysis.h"
 
 namespace vesica::test {
 

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "CompareTestSupport.h"
-#include "vesica/compare/recording/FillingTimes.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/recording/FillingTimes.h"
 #include "vesica/compare/recording/RecordingHeader.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/io/RecordingReader.h"

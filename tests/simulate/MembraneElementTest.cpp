@@ -5,10 +5,10 @@
 
 #include <cmath>
 
+#include "vesica/simulate/materials/MaterialRegistry.h"
 #include "wall/MembraneElement.h"
 #include "wall/MembraneProblem.h"
 #include "wall/PressureLoad.h"
-#include "vesica/simulate/materials/MaterialRegistry.h"
 
 using namespace vesica::simulate;
 

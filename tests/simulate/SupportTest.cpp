@@ -8,10 +8,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "wall/MembraneProblem.h"
 #include "solver/NewtonSolver.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
 #include "vesica/simulate/wall/SphereMesh.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica::simulate;
 

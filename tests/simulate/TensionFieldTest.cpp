@@ -7,9 +7,9 @@
 
 #include <cmath>
 
+#include "vesica/simulate/materials/MaterialRegistry.h"
 #include "wall/MembraneElement.h"
 #include "wall/TensionField.h"
-#include "vesica/simulate/materials/MaterialRegistry.h"
 
 using namespace vesica::simulate;
 

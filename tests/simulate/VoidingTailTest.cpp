@@ -14,11 +14,11 @@
 #include <memory>
 #include <string>
 
-#include "protocol/CystometryProtocol.h"
 #include "cavity/HydrostaticCavity.h"
+#include "protocol/CystometryProtocol.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica;

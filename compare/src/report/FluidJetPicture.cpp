@@ -19,8 +19,8 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <Eigen/Dense>
 
-#include "vesica/compare/html/Viridis.h"
 #include "vesica/compare/analysis/WallStress.h"
+#include "vesica/compare/html/Viridis.h"
 #include "vesica/core/Error.h"
 
 namespace vesica::compare {

@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "report/ReportParts.h"
+#include "vesica/compare/html/SvgPlot.h"
 #include "vesica/compare/recording/FillingTimes.h"
 #include "vesica/compare/report/MultichannelTrace.h"
-#include "vesica/compare/html/SvgPlot.h"
 
 namespace vesica::compare::report {
 namespace {

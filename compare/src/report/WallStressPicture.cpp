@@ -30,8 +30,8 @@
 #include <vtkWindowToImageFilter.h>
 
 #include "report/ShellQuote.h"
-#include "vesica/compare/html/Viridis.h"
 #include "vesica/compare/analysis/WallStress.h"
+#include "vesica/compare/html/Viridis.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <utility>
 
-#include "wall/WallSurroundings.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
+#include "wall/WallSurroundings.h"
 
 namespace vesica::simulate {
 namespace {

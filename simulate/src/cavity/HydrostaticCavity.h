@@ -13,13 +13,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "solver/BossakNewmark.h"
 #include "cavity/CavityModel.h"
 #include "cavity/LumpedCavity.h"
-#include "wall/MembraneProblem.h"
+#include "solver/BossakNewmark.h"
 #include "solver/NewtonSolver.h"
 #include "solver/StepStatistics.h"
 #include "vesica/simulate/protocol/CystometrySettings.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate {
 

@@ -4,8 +4,8 @@
 // Pa, volumes in m³, flows in m³/s.
 #include <stdexcept>
 
-#include "protocol/Checkpoint.h"
 #include "cavity/HydrostaticCavity.h"
+#include "protocol/Checkpoint.h"
 #include "vesica/simulate/protocol/CheckpointFile.h"
 
 namespace vesica::simulate {

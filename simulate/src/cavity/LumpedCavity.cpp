@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "wall/TensionField.h"
 #include "vesica/core/Units.h"
+#include "wall/TensionField.h"
 
 namespace vesica::simulate {
 namespace {

@@ -15,10 +15,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cavity/CavityModel.h"
-#include "wall/PlaneStress.h"
 #include "solver/StepStatistics.h"
-#include "vesica/simulate/protocol/CystometrySettings.h"
 #include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/protocol/CystometrySettings.h"
+#include "wall/PlaneStress.h"
 
 namespace vesica::simulate {
 

@@ -26,12 +26,12 @@
 
 #include "cavity/CavityModel.h"
 #include "cavity/HydrostaticCavity.h"
-#include "wall/MembraneProblem.h"
-#include "solver/StepStatistics.h"
 #include "fluid/FluidModel.h"
 #include "fluid/FluidWallCoupling.h"
 #include "fluid/OutletJet.h"
+#include "solver/StepStatistics.h"
 #include "vesica/simulate/protocol/CystometrySettings.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate::fluid {
 

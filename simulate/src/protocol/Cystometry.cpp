@@ -4,17 +4,17 @@
 #include <memory>
 #include <sstream>
 
-#include "protocol/CystometryProtocol.h"
 #include "cavity/HydrostaticCavity.h"
 #include "cavity/LumpedCavity.h"
-#include "wall/PrestressReference.h"
-#include "protocol/ProtocolRanges.h"
 #include "fluid/NavierStokesCavity.h"
+#include "protocol/CystometryProtocol.h"
+#include "protocol/ProtocolRanges.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/materials/MaterialRegistry.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "wall/PrestressReference.h"
 
 namespace vesica::simulate {
 namespace {

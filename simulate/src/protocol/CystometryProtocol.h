@@ -13,9 +13,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "protocol/ActivationCurve.h"
 #include "cavity/CavityModel.h"
 #include "cavity/UrethraLaw.h"
+#include "protocol/ActivationCurve.h"
 #include "vesica/simulate/protocol/Cystometry.h"
 
 namespace vesica::simulate {

@@ -16,8 +16,8 @@
 
 #include <Eigen/Sparse>
 
-#include "wall/ElasticFoundation.h"
 #include "vesica/simulate/solver/NewtonOptions.h"
+#include "wall/ElasticFoundation.h"
 
 namespace vesica::simulate {
 

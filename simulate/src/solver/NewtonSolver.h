@@ -22,9 +22,9 @@
 #include <Eigen/Dense>
 
 #include "solver/LinearSolver.h"
-#include "wall/MembraneProblem.h"
 #include "solver/NewtonLoop.h"
 #include "vesica/simulate/solver/NewtonOptions.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate {
 

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "wall/MembraneProblem.h"
 #include "solver/NewtonSolver.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
@@ -15,6 +14,7 @@
 #include "vesica/core/Units.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
 #include "vesica/simulate/wall/MeshReader.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate {
 namespace {

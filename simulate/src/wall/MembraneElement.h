@@ -5,9 +5,9 @@
 
 #include <Eigen/Dense>
 
-#include "wall/PlaneStress.h"
 #include "vesica/simulate/materials/Material.h"
 #include "vesica/simulate/wall/WallStress.h"
+#include "wall/PlaneStress.h"
 
 namespace vesica::simulate {
 

@@ -12,10 +12,10 @@
 #include <Eigen/Sparse>
 
 #include "solver/BossakNewmark.h"
-#include "wall/MembraneElement.h"
-#include "wall/PressureLoad.h"
 #include "vesica/simulate/materials/Material.h"
 #include "vesica/simulate/wall/WallModel.h"
+#include "wall/MembraneElement.h"
+#include "wall/PressureLoad.h"
 
 namespace vesica::simulate {
 

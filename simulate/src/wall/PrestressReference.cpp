@@ -1,9 +1,9 @@
 #include "wall/PrestressReference.h"
 
-#include "wall/MembraneProblem.h"
 #include "solver/NewtonSolver.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate {
 namespace {

@@ -14,8 +14,8 @@
 // material of the registry (it only calls plane_stress()).
 #include <Eigen/Dense>
 
-#include "wall/PlaneStress.h"
 #include "vesica/simulate/materials/Material.h"
+#include "wall/PlaneStress.h"
 
 namespace vesica::simulate {
 

@@ -4,8 +4,8 @@
 // reference point), the wall's own weight and the springs of the support region. SI.
 #include <Eigen/Dense>
 
-#include "wall/MembraneProblem.h"
 #include "vesica/simulate/protocol/CystometrySettings.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate {
 

@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/compare/recording/Artefacts.h"
 #include "vesica/compare/analysis/IcsParameters.h"
+#include "vesica/compare/recording/Artefacts.h"
 #include "vesica/compare/recording/Recording.h"
 
 namespace vesica::compare {

@@ -20,8 +20,8 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/compare/calibration/ModelRun.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/ModelRun.h"
 
 namespace vesica::compare {
 

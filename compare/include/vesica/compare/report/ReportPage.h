@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/compare/calibration/CalibrationResult.h"
-#include "vesica/compare/report/FluidJetPicture.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/analysis/SexSpecificCriteria.h"
 #include "vesica/compare/analysis/SimulationSettings.h"
+#include "vesica/compare/calibration/CalibrationResult.h"
+#include "vesica/compare/report/FluidJetPicture.h"
 #include "vesica/compare/report/WallStressPicture.h"
 
 namespace vesica::compare {

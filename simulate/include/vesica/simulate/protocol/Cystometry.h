@@ -22,8 +22,8 @@
 #include <nlohmann/json.hpp>
 
 #include "vesica/io/HistoryCsv.h"
-#include "vesica/simulate/protocol/CystometrySettings.h"
 #include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/protocol/CystometrySettings.h"
 #include "vesica/simulate/wall/WallLoading.h"
 #include "vesica/simulate/wall/WallModel.h"
 

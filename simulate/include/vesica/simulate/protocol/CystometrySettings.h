@@ -7,8 +7,8 @@
 #include <functional>
 #include <string>
 
-#include "vesica/simulate/solver/NewtonOptions.h"
 #include "vesica/simulate/protocol/PressureTrace.h"
+#include "vesica/simulate/solver/NewtonOptions.h"
 #include "vesica/simulate/wall/WallLoading.h"
 
 namespace vesica::simulate {

@@ -11,8 +11,8 @@
 // default_thickness_m and no fibers. Coordinates are millimetres, converted to metres.
 #include <filesystem>
 
-#include "vesica/simulate/wall/WallModel.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
+#include "vesica/simulate/wall/WallModel.h"
 
 namespace vesica::simulate {
 
