@@ -113,7 +113,7 @@ if(NOT TARGET vesica_suitesparse)
 endif()
 
 # MUMPS (sequential build): sparse LDLᵀ of the symmetric indefinite wall tangent past
-# the pressure limit point (simulate/src/SymmetricIndefiniteLdlt.cpp). No CMake config.
+# the pressure limit point (simulate/src/solver/SymmetricIndefiniteLdlt.cpp). No CMake config.
 if(NOT TARGET vesica_mumps)
   find_path(MUMPS_INCLUDE_DIR dmumps_c.h REQUIRED)
   find_library(DMUMPS_LIBRARY dmumps_seq REQUIRED)

@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/compare/Calibration.h"
-#include "vesica/compare/RecordingAnalysis.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/Calibration.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 namespace vc = vesica::compare;
 namespace vs = vesica::simulate;

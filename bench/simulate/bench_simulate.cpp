@@ -11,12 +11,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "MembraneProblem.h"
-#include "NewtonSolver.h"
+#include "solver/NewtonSolver.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica;
 using namespace vesica::simulate;

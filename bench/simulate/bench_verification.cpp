@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "vesica/core/Units.h"
-#include "vesica/simulate/SphereMesh.h"
-#include "vesica/simulate/VerificationProtocol.h"
+#include "vesica/simulate/verification/VerificationProtocol.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica;
 using namespace vesica::simulate;

@@ -21,13 +21,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "vesica/compare/Calibration.h"
-#include "vesica/compare/PiecewiseLinear.h"
-#include "vesica/compare/RecordingAnalysis.h"
+#include "vesica/compare/analysis/PiecewiseLinear.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/Calibration.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/RecordingReader.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/WallLoading.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/WallLoading.h"
 
 using namespace vesica;
 

@@ -9,8 +9,8 @@
 
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/CompareRun.h"
-#include "vesica/compare/WallStress.h"
-#include "vesica/compare/WallStressPicture.h"
+#include "vesica/compare/analysis/WallStress.h"
+#include "vesica/compare/report/WallStressPicture.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/ParameterCli.h"
 #include "vesica/core/StageMain.h"

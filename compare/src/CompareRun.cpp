@@ -7,13 +7,13 @@
 #include <memory>
 #include <optional>
 
-#include "vesica/compare/CalibrationRun.h"
 #include "vesica/compare/CompareParameters.h"
-#include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/PdfPrint.h"
-#include "vesica/compare/RecordingHeader.h"
-#include "vesica/compare/ReportPage.h"
-#include "vesica/compare/WallStress.h"
+#include "vesica/compare/analysis/ModelComparison.h"
+#include "vesica/compare/analysis/WallStress.h"
+#include "vesica/compare/calibration/CalibrationRun.h"
+#include "vesica/compare/recording/RecordingHeader.h"
+#include "vesica/compare/report/PdfPrint.h"
+#include "vesica/compare/report/ReportPage.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"

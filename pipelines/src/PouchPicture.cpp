@@ -4,8 +4,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "vesica/compare/SvgPlot.h"
-#include "vesica/compare/Viridis.h"
+#include "vesica/compare/html/SvgPlot.h"
+#include "vesica/compare/html/Viridis.h"
 
 namespace vesica::pipelines {
 namespace {

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "vesica/core/ContentHash.h"
-#include "vesica/simulate/CheckpointFile.h"
+#include "vesica/simulate/protocol/CheckpointFile.h"
 
 namespace vesica::pipelines {
 namespace {

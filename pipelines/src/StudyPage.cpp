@@ -7,8 +7,8 @@
 #include <set>
 #include <sstream>
 
-#include "vesica/compare/PageCheckScript.h"
-#include "vesica/compare/SvgPlot.h"
+#include "vesica/compare/html/PageCheckScript.h"
+#include "vesica/compare/html/SvgPlot.h"
 #include "vesica/pipelines/PouchPicture.h"
 
 namespace vesica::pipelines {

@@ -12,11 +12,11 @@
 #include <filesystem>
 #include <string>
 
-#include "vesica/compare/Artefacts.h"
-#include "vesica/compare/CalibrationRun.h"
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/CompareRun.h"
-#include "vesica/compare/IcsParameters.h"
+#include "vesica/compare/analysis/IcsParameters.h"
+#include "vesica/compare/calibration/CalibrationRun.h"
+#include "vesica/compare/recording/Artefacts.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/LabelMap.h"
@@ -24,10 +24,10 @@
 #include "vesica/io/RecordingReader.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
-#include "vesica/simulate/Cystometry.h"
 #include "vesica/simulate/SimulateParameters.h"
 #include "vesica/simulate/SimulateSettings.h"
-#include "vesica/simulate/WallLoading.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/WallLoading.h"
 
 namespace py = pybind11;
 using namespace vesica;

@@ -7,8 +7,8 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/FebioExport.h"
-#include "vesica/simulate/VerificationProtocol.h"
+#include "vesica/simulate/verification/FebioExport.h"
+#include "vesica/simulate/verification/VerificationProtocol.h"
 
 namespace fs = std::filesystem;
 

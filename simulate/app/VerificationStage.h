@@ -5,9 +5,9 @@
 
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
-#include "vesica/simulate/Material.h"
 #include "vesica/simulate/SimulateSettings.h"
-#include "vesica/simulate/WallModel.h"
+#include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/wall/WallModel.h"
 
 namespace vesica::simulate {
 

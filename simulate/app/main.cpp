@@ -17,12 +17,12 @@
 #include "vesica/core/StageRecord.h"
 #include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/CheckpointFile.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/MeshReader.h"
 #include "vesica/simulate/SimulateParameters.h"
 #include "vesica/simulate/SimulateSettings.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/protocol/CheckpointFile.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/MeshReader.h"
 
 namespace fs = std::filesystem;
 using namespace vesica;

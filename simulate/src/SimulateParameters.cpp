@@ -2,7 +2,7 @@
 // the fields of SimulateSettings, whose initialisers are the defaults.
 #include "vesica/simulate/SimulateParameters.h"
 
-#include "VerificationParameters.h"
+#include "verification/VerificationParameters.h"
 #include "vesica/simulate/SimulateSettings.h"
 
 namespace vesica::simulate {

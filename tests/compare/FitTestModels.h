@@ -6,9 +6,9 @@
 #include <functional>
 #include <vector>
 
-#include "vesica/compare/CalibrationTargets.h"
-#include "vesica/compare/ModelRun.h"
-#include "vesica/compare/RecordingAnalysis.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/CalibrationTargets.h"
+#include "vesica/compare/calibration/ModelRun.h"
 
 namespace vesica::test {
 

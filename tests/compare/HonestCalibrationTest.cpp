@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "FitTestModels.h"
-#include "vesica/compare/Baselines.h"
-#include "vesica/compare/TwoStageFit.h"
+#include "vesica/compare/analysis/Baselines.h"
+#include "vesica/compare/calibration/TwoStageFit.h"
 
 namespace vc = vesica::compare;
 using vesica::test::filling_run;

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "TestData.h"
-#include "vesica/compare/RecordingAnalysis.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/io/RecordingReader.h"
 
 namespace vc = vesica::compare;

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/PiecewiseLinear.h"
+#include "vesica/compare/analysis/ModelComparison.h"
+#include "vesica/compare/analysis/PiecewiseLinear.h"
 
 namespace vc = vesica::compare;
 

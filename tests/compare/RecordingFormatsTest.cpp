@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "TestData.h"
-#include "vesica/compare/RecordingAnalysis.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/core/Error.h"
 #include "vesica/io/RecordingReader.h"
 

@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "CompareTestSupport.h"
-#include "vesica/compare/FillingTimes.h"
-#include "vesica/compare/RecordingAnalysis.h"
-#include "vesica/compare/RecordingHeader.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/recording/FillingTimes.h"
+#include "vesica/compare/recording/RecordingHeader.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/io/RecordingReader.h"
 

@@ -4,9 +4,9 @@
 // (the coarse sphere surrogate, then the wall) and on the wall alone.
 #include <gtest/gtest.h>
 
-#include "vesica/compare/Calibration.h"
-#include "vesica/compare/RecordingAnalysis.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/calibration/Calibration.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 namespace vc = vesica::compare;
 namespace vs = vesica::simulate;

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "vesica/compare/SvgPlot.h"
+#include "vesica/compare/html/SvgPlot.h"
 
 using vesica::compare::SvgPlot;
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "vesica/compare/CalibrationTargets.h"
-#include "vesica/compare/VoidingAgreement.h"
+#include "vesica/compare/analysis/VoidingAgreement.h"
+#include "vesica/compare/calibration/CalibrationTargets.h"
 
 namespace vc = vesica::compare;
 

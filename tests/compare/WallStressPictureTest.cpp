@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "CompareTestSupport.h"
-#include "vesica/compare/WallStress.h"
+#include "vesica/compare/analysis/WallStress.h"
 #include "vesica/io/PvdSeries.h"
 #include "vesica/io/VtuFile.h"
 

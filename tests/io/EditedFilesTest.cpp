@@ -19,7 +19,7 @@
 #include "vesica/io/RegionsSidecar.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
-#include "vesica/simulate/MeshReader.h"
+#include "vesica/simulate/wall/MeshReader.h"
 
 namespace vesica::test {
 namespace {

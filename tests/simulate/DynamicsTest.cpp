@@ -9,11 +9,11 @@
 #include <cmath>
 #include <iostream>
 
-#include "BossakNewmark.h"
-#include "MembraneProblem.h"
-#include "NewtonSolver.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "solver/BossakNewmark.h"
+#include "solver/NewtonSolver.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica::simulate;
 

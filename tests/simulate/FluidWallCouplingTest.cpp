@@ -16,12 +16,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "MembraneProblem.h"
 #include "fluid/FluidWallCoupling.h"
 #include "fluid/TetQuality.h"
 #include "vesica/mesh/CavityMesher.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica::simulate;
 using namespace vesica::simulate::fluid;

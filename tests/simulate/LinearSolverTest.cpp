@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "LinearSolver.h"
+#include "solver/LinearSolver.h"
 
 using vesica::simulate::LinearSolver;
 

@@ -17,8 +17,8 @@
 #include "ShellCommand.h"
 #include "TestData.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica;
 using namespace vesica::simulate;

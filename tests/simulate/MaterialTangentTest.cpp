@@ -7,7 +7,7 @@
 
 #include "vesica/core/Error.h"
 
-#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
 
 using namespace vesica::simulate;
 

@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "MembraneElement.h"
-#include "MembraneProblem.h"
-#include "PressureLoad.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "wall/MembraneElement.h"
+#include "wall/MembraneProblem.h"
+#include "wall/PressureLoad.h"
 
 using namespace vesica::simulate;
 

@@ -10,7 +10,7 @@
 #include "TestData.h"
 #include "vesica/core/Error.h"
 #include "vesica/io/VtuFile.h"
-#include "vesica/simulate/MeshReader.h"
+#include "vesica/simulate/wall/MeshReader.h"
 
 namespace fs = std::filesystem;
 using vesica::io::VolumeMesh;

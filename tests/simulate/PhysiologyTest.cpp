@@ -32,8 +32,8 @@
 #include "TestData.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/RecordingReader.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::test;

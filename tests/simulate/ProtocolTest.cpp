@@ -30,9 +30,9 @@
 #include <utility>
 #include <vector>
 
-#include "CavityModel.h"
-#include "CystometryProtocol.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "cavity/CavityModel.h"
+#include "protocol/CystometryProtocol.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica::simulate;
 

@@ -22,8 +22,8 @@
 #include "HistoryCsv.h"
 #include "ShellCommand.h"
 #include "TestData.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::simulate;

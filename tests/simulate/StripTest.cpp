@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "MembraneProblem.h"
-#include "NewtonSolver.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "solver/NewtonSolver.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica::simulate;
 

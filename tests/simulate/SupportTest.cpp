@@ -8,10 +8,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "MembraneProblem.h"
-#include "NewtonSolver.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "solver/NewtonSolver.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
+#include "wall/MembraneProblem.h"
 
 using namespace vesica::simulate;
 

@@ -7,9 +7,9 @@
 
 #include <cmath>
 
-#include "MembraneElement.h"
-#include "TensionField.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "wall/MembraneElement.h"
+#include "wall/TensionField.h"
 
 using namespace vesica::simulate;
 

@@ -17,7 +17,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "UrethraLaw.h"
+#include "cavity/UrethraLaw.h"
 
 using vesica::simulate::UrethraLaw;
 

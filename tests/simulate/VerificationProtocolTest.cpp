@@ -10,8 +10,8 @@
 
 #include "ShellCommand.h"
 #include "TestData.h"
-#include "vesica/simulate/SphereMesh.h"
-#include "vesica/simulate/VerificationProtocol.h"
+#include "vesica/simulate/verification/VerificationProtocol.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica::simulate;
 

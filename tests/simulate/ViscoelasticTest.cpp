@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "PlaneStress.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "wall/PlaneStress.h"
 
 using namespace vesica::simulate;
 

@@ -14,12 +14,12 @@
 #include <memory>
 #include <string>
 
-#include "CystometryProtocol.h"
-#include "HydrostaticCavity.h"
+#include "cavity/HydrostaticCavity.h"
+#include "protocol/CystometryProtocol.h"
 #include "vesica/core/Units.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/MaterialRegistry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 using namespace vesica;
 using namespace vesica::simulate;

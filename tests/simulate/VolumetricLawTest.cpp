@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "vesica/core/Error.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
 
 using namespace vesica::simulate;
 

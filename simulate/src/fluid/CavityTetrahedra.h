@@ -5,8 +5,8 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/WallModel.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
+#include "vesica/simulate/wall/WallModel.h"
 
 namespace vesica::simulate::fluid {
 

@@ -25,7 +25,7 @@
 #include <Eigen/Sparse>
 #include <nlohmann/json.hpp>
 
-#include "vesica/simulate/CystometrySettings.h"
+#include "vesica/simulate/protocol/CystometrySettings.h"
 
 namespace vesica::simulate::fluid {
 

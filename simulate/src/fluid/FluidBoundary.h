@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-#include "UrethraLaw.h"
+#include "cavity/UrethraLaw.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
 
 namespace vesica::simulate::fluid {

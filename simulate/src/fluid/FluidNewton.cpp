@@ -4,8 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "LinearSolver.h"
-#include "NewtonLoop.h"
+#include "solver/LinearSolver.h"
+#include "solver/NewtonLoop.h"
 #include "vesica/core/Log.h"
 
 namespace vesica::simulate::fluid {

@@ -1,7 +1,7 @@
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
 
-#include "../SeriesFrames.h"
 #include "fluid/FlowStructures.h"
+#include "protocol/SeriesFrames.h"
 #include "vesica/core/Units.h"
 
 namespace vesica::simulate::fluid {

@@ -10,8 +10,6 @@
 #include <Eigen/Geometry>
 #include <Eigen/Sparse>
 
-#include "LinearSolver.h"
-#include "PressureLoad.h"
 #include "fluid/CavityTetrahedra.h"
 #include "fluid/DivergenceFreeProjection.h"
 #include "fluid/FluidProblem.h"
@@ -19,7 +17,9 @@
 #include "fluid/MeshTransfer.h"
 #include "fluid/StabilizedTet.h"
 #include "fluid/TetQuality.h"
+#include "solver/LinearSolver.h"
 #include "vesica/core/Log.h"
+#include "wall/PressureLoad.h"
 
 namespace vesica::simulate::fluid {
 

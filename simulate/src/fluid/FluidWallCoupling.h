@@ -25,13 +25,13 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
-#include "MembraneProblem.h"
-#include "NewtonLoop.h"
-#include "PressureLoad.h"
 #include "fluid/CoupledLinearSolver.h"
 #include "fluid/FluidBoundary.h"
 #include "fluid/FluidModel.h"
 #include "fluid/MeshMotion.h"
+#include "solver/NewtonLoop.h"
+#include "wall/MembraneProblem.h"
+#include "wall/PressureLoad.h"
 
 namespace vesica::simulate {
 class CheckpointWriter;

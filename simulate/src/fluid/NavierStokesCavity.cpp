@@ -7,7 +7,6 @@
 #include <exception>
 #include <utility>
 
-#include "WallSurroundings.h"
 #include "fluid/BoundaryFaces.h"
 #include "fluid/MeshMotion.h"
 #include "fluid/TetQuality.h"
@@ -17,6 +16,7 @@
 #include "vesica/core/Regions.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
+#include "wall/WallSurroundings.h"
 
 namespace vesica::simulate::fluid {
 namespace {

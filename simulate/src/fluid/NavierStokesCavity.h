@@ -24,14 +24,14 @@
 #include <string>
 #include <vector>
 
-#include "CavityModel.h"
-#include "HydrostaticCavity.h"
-#include "MembraneProblem.h"
-#include "StepStatistics.h"
+#include "cavity/CavityModel.h"
+#include "cavity/HydrostaticCavity.h"
 #include "fluid/FluidModel.h"
 #include "fluid/FluidWallCoupling.h"
 #include "fluid/OutletJet.h"
-#include "vesica/simulate/CystometrySettings.h"
+#include "solver/StepStatistics.h"
+#include "vesica/simulate/protocol/CystometrySettings.h"
+#include "wall/MembraneProblem.h"
 
 namespace vesica::simulate::fluid {
 

@@ -6,11 +6,11 @@
 // Pa, volumes in m³.
 #include <stdexcept>
 
-#include "Checkpoint.h"
-#include "WallSurroundings.h"
 #include "fluid/NavierStokesCavity.h"
-#include "vesica/simulate/CheckpointFile.h"
+#include "protocol/Checkpoint.h"
 #include "vesica/simulate/fluid/FluidVtuSeries.h"
+#include "vesica/simulate/protocol/CheckpointFile.h"
+#include "wall/WallSurroundings.h"
 
 namespace vesica::simulate::fluid {
 namespace {

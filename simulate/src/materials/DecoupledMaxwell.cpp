@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-#include "DecoupledMaxwell.h"
+#include "materials/DecoupledMaxwell.h"
 
 namespace vesica::simulate {
 namespace {

@@ -5,8 +5,8 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/Material.h"
-#include "vesica/simulate/Voigt.h"
+#include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/materials/Voigt.h"
 
 namespace vesica::simulate {
 

@@ -15,8 +15,8 @@
 
 #include <Eigen/Dense>
 
-#include "vesica/simulate/Material.h"
-#include "vesica/simulate/Voigt.h"
+#include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/materials/Voigt.h"
 
 namespace vesica::simulate {
 

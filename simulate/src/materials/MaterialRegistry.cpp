@@ -14,9 +14,9 @@
 #include <algorithm>
 #include <string>
 
-#include "DecoupledMaxwell.h"
+#include "materials/DecoupledMaxwell.h"
 #include "vesica/core/Error.h"
-#include "vesica/simulate/MaterialRegistry.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
 
 namespace vesica::simulate {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "vesica/core/Units.h"
 #include "vesica/core/Version.h"
-#include "vesica/simulate/Cystometry.h"
-#include "vesica/simulate/SphereMesh.h"
+#include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/SphereMesh.h"
 
 int main() {
   namespace sim = vesica::simulate;

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "vesica/compare/Artefacts.h"
-#include "vesica/compare/ModelComparison.h"
-#include "vesica/compare/RecordingAnalysis.h"
+#include "vesica/compare/analysis/ModelComparison.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/recording/Artefacts.h"
 #include "vesica/core/StageMain.h"
 
 namespace vesica::compare {
@@ -20,7 +20,7 @@ struct CalibrationModel {
   // Voiding drive while voiding is fitted and the drive is not (0: the simulation's default).
   double straining_kpa = 0.0;
   double detrusor_kpa = 0.0;
-  bool surrogate = true;     // the two-stage fit's fast surrogate search first
+  bool surrogate = true;      // the two-stage fit's fast surrogate search first
   int surrogate_starts = 16;  // starting points of the surrogate search
 };
 

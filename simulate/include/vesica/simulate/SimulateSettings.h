@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "vesica/simulate/CystometrySettings.h"
-#include "vesica/simulate/VerificationSettings.h"
-#include "vesica/simulate/WallLoading.h"
+#include "vesica/simulate/protocol/CystometrySettings.h"
+#include "vesica/simulate/verification/VerificationSettings.h"
+#include "vesica/simulate/wall/WallLoading.h"
 
 namespace vesica::simulate {
 

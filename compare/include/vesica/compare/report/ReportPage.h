@@ -1,0 +1,44 @@
+#pragma once
+// The comparison report: one self-contained HTML page (inline SVG plots, the wall-stress
+// PNG embedded as base64, no external resources), laid out for a urologist: the header
+// (recording and model settings), the stacked multichannel trace, the filling, flow and
+// pressure-flow plots, the parameter table with normal ranges, the sex-specific criteria,
+// the wall stress at capacity, then the model-against-measurement details. It fits a
+// 1280-px window and prints to A4 (report.pdf).
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "vesica/compare/analysis/RecordingAnalysis.h"
+#include "vesica/compare/analysis/SexSpecificCriteria.h"
+#include "vesica/compare/analysis/SimulationSettings.h"
+#include "vesica/compare/calibration/CalibrationResult.h"
+#include "vesica/compare/report/FluidJetPicture.h"
+#include "vesica/compare/report/WallStressPicture.h"
+
+namespace vesica::compare {
+
+// What the report says about the patient (never a name or an identifier).
+struct PatientFacts {
+  Sex sex = Sex::unknown;
+  std::string sex_source;  // "recording header", "--sex", or empty
+  std::optional<double> age_years;
+  std::optional<double> stated_fill_rate_ml_min;
+};
+
+struct ReportInputs {
+  const RecordingAnalysis* measured = nullptr;  // either may be absent
+  const RecordingAnalysis* simulated = nullptr;
+  const CalibrationResult* calibration = nullptr;
+  std::optional<WallStressPicture> wall_stress;  // none when no frame was available
+  std::optional<FluidJetPicture> fluid_jet;      // level 2's jet at Qmax; none at level 1
+  const nlohmann::json* comparison = nullptr;    // compare_models(), or none
+  PatientFacts patient;
+  std::optional<SimulationSettings> settings;  // of the simulated recording
+  std::string generated_utc;                   // when the report was made
+};
+
+std::string report_html(const ReportInputs& in);
+
+}  // namespace vesica::compare

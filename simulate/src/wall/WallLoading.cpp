@@ -1,0 +1,26 @@
+#include "vesica/simulate/wall/WallLoading.h"
+
+#include "vesica/core/Error.h"
+#include "vesica/core/Units.h"
+#include "vesica/simulate/wall/MeshReader.h"
+
+namespace vesica::simulate {
+
+Eigen::Vector3d gravity_lps(Posture posture) {
+  return posture == Posture::Supine ? Eigen::Vector3d(0.0, units::kStandardGravity, 0.0)
+                                    : Eigen::Vector3d(0.0, 0.0, -units::kStandardGravity);
+}
+
+WallModel load_wall(const std::filesystem::path& path, const WallOptions& options) {
+  if (!(options.thickness_mm > 0.0)) usage_error("thickness_mm must be > 0");
+  WallModel wall = read_wall(path, units::m_from_mm(options.thickness_mm));
+  if (options.reference == ReferenceState::Scale) {
+    if (!(options.residual_ml > 0.0)) usage_error("residual_ml must be > 0");
+    scale_to_volume(wall, units::m3_from_ml(options.residual_ml));
+  }
+  const Eigen::Vector3d down = gravity_lps(options.posture).normalized();
+  fix_regions(wall, down, units::m_from_mm(options.fixed_patch_radius_mm));
+  return wall;
+}
+
+}  // namespace vesica::simulate
