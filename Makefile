@@ -32,8 +32,8 @@ DEBIAN_PACKAGES += ccache
 
 # Extra cmake options for the first configure (e.g. CMAKE_ARGS=-DVESICA_SHARED_DIR=/data).
 CMAKE_ARGS ?=
-# Precompiled headers carry no __DATE__/__TIME__ and defines of their own: ccache may cache
-# the objects compiled with them (see its manual, "Precompiled headers").
+# ccache may trust a header's contents rather than its time stamps (its manual,
+# "Sloppiness"): a fresh clone has every file new.
 export CCACHE_SLOPPINESS ?= pch_defines,time_macros,include_file_mtime,include_file_ctime
 
 .PHONY: all deps configure build build-tests demo check test bench install package format clean
