@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 
+#include <fmt/format.h>
+
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
@@ -20,7 +22,7 @@ namespace vesica::surface {
 
 namespace {
 
-using Field = std::function<double(const Eigen::Vector3d&)>;  // < 0 inside
+using Field = std::function<double(const Eigen::Vector3d&)>;  // < 0 inside, mm
 
 Eigen::Vector3d to_eigen(const pouch::Vec3& v) {
   return {v[0], v[1], v[2]};
@@ -41,6 +43,8 @@ Eigen::Vector3d reservoir_axes(const ShapeSpec& spec) {
     }
     case ShapeKind::Pouch:
       return to_eigen(pouch::reservoir_semi_axes_mm(spec.volume_ml, spec.elongation));
+    default:  // the ileal shapes have their own geometry (make_ileal_shape)
+      break;
   }
   return Eigen::Vector3d::Constant(r);
 }
@@ -99,14 +103,62 @@ ShapeKind shape_kind_from_name(const std::string& name) {
   if (name == "sphere") return ShapeKind::Sphere;
   if (name == "ellipsoid") return ShapeKind::Ellipsoid;
   if (name == "pouch") return ShapeKind::Pouch;
-  usage_error("unknown shape \"" + name + "\"", "use sphere, ellipsoid or pouch");
+  if (name == "tubular") return ShapeKind::Tubular;
+  if (name == "studer") return ShapeKind::Studer;
+  if (name == "hautmann") return ShapeKind::Hautmann;
+  usage_error("unknown shape \"" + name + "\"",
+              "use sphere, ellipsoid, pouch, tubular, studer or hautmann");
+}
+
+bool is_ileal(const ShapeSpec& spec) {
+  switch (spec.kind) {
+    case ShapeKind::Tubular:
+    case ShapeKind::Studer:
+    case ShapeKind::Hautmann:
+      return true;
+    case ShapeKind::Sphere:
+      return spec.ileum.length_cm > 0;
+    default:
+      return false;
+  }
+}
+
+IlealPouchGeometry ileal_geometry(const ShapeSpec& spec) {
+  if (!is_ileal(spec)) usage_error("this shape is not built from an ileal segment");
+  if (!(spec.ileum.length_cm > 0))
+    usage_error("--shape tubular, studer and hautmann need --ileum-length-cm");
+  const IlealConfiguration c = spec.kind == ShapeKind::Tubular    ? IlealConfiguration::Tubular
+                               : spec.kind == ShapeKind::Studer   ? IlealConfiguration::Studer
+                               : spec.kind == ShapeKind::Hautmann ? IlealConfiguration::Hautmann
+                                                                  : IlealConfiguration::Sphere;
+  return ileal_pouch(c, spec.ileum);
 }
 
 double pouch_neck_radius_mm(const ShapeSpec& spec) {
   return pouch_geometry_of(spec).neck_radius_mm;
 }
 
+namespace {
+
+// The ileal shapes keep the segment's area: contoured finely enough that the bowel's
+// circumference is resolved (a sixth of its radius), remeshed, never rescaled.
+TriangleSurface make_ileal_shape(const ShapeSpec& spec) {
+  const IlealPouchGeometry g = ileal_geometry(spec);
+  if (spec.edge_mm > 0.5 * g.tube_radius_mm)
+    usage_error(fmt::format("--edge-mm {:g} is too coarse for the bowel's {:.1f} mm radius",
+                            spec.edge_mm, g.tube_radius_mm),
+                fmt::format("use at most {:.1f} mm", 0.5 * g.tube_radius_mm));
+  const double step = std::min(spec.edge_mm / 3.0, g.tube_radius_mm / 6.0);
+  TriangleSurface surface = contour_field(g.field, g.half_extent_mm, g.outlet_mm.z(), step);
+  remesh_isotropic(RemeshOptions{spec.edge_mm, 5, 3}, surface);
+  surface.V.rowwise() += spec.center_mm.transpose();
+  return surface;
+}
+
+}  // namespace
+
 TriangleSurface make_shape(const ShapeSpec& spec) {
+  if (is_ileal(spec)) return make_ileal_shape(spec);
   if (!(spec.volume_ml > 0)) usage_error("--volume-ml must be positive");
   if (!(spec.elongation > 0)) usage_error("--elongation must be positive");
   if (spec.semi_axes_mm && !(spec.semi_axes_mm->minCoeff() > 0))

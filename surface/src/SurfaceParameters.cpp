@@ -41,10 +41,28 @@ Eigen::Vector3d factors_from_text(const std::string& text, const NumberRange& ra
   return f;
 }
 
+// The ileal segment a neobladder is built from (docs/surface.md, "Ileal neobladders"), in
+// cm as surgeons measure it.
+void add_ileum_entries(IleumSegment& ileum, ParameterTable& t) {
+  t.number("ileum_length_cm", ileum.length_cm, "cm",
+           NumberRange::at_least(10)
+               .at_most(100)
+               .or_value(0, "not built from ileum")
+               .because("reconstructions use 40-70 cm of ileum"),
+           "ileal segment length L (tubular, studer, hautmann; sphere of area L x C)");
+  t.number("ileum_circumference_cm", ileum.circumference_cm, "cm",
+           NumberRange::at_least(5).at_most(15).because("adult ileum: lumen 2-4 cm across"),
+           "ileal circumference C");
+  t.number("afferent_limb_cm", ileum.afferent_limb_cm, "cm",
+           NumberRange::at_least(0).at_most(30).because("Studer's afferent limb is 12-22 cm"),
+           "studer: proximal limb left tubular, part of L (0 = none)");
+}
+
 void add_shape_entries(SurfaceSettings& s, ParameterTable& t) {
   ShapeSpec& shape = s.shape_spec;
-  t.choice("shape", s.shape, {"sphere", "ellipsoid", "pouch"},
-           "what-if shape built instead of reading an input");
+  t.choice("shape", s.shape, {"sphere", "ellipsoid", "pouch", "tubular", "studer", "hautmann"},
+           "what-if shape built instead of reading an input; tubular, studer, hautmann (and "
+           "sphere with ileum_length_cm) are neobladders from an ileal segment");
   t.number("volume_ml", shape.volume_ml, "ml",
            NumberRange::at_least(1).at_most(5000).because(
                "a bladder or neobladder holds at most a few litres"),
@@ -59,6 +77,7 @@ void add_shape_entries(SurfaceSettings& s, ParameterTable& t) {
       [&shape] { return shape.semi_axes_mm ? xyz(*shape.semi_axes_mm) : nlohmann::json(); });
   t.number("elongation", shape.elongation, "-", NumberRange::at_least(0.2).at_most(5),
            "ellipsoid z/x ratio; pouch left-right length ratio (1 = spherical)");
+  add_ileum_entries(shape.ileum, t);
   t.number("neck_radius_mm", shape.neck_radius_mm, "mm",
            NumberRange::at_least(1).at_most(50).or_value(0, "a quarter of the reservoir radius"),
            "pouch neck radius");

@@ -199,6 +199,9 @@ RegionSummary tag_regions(const SurfaceStageOptions& options, const TriangleSurf
     add_notes({options.input + ": the outlet is placed automatically (most inferior point, " +
                fmt::format("{:g}", regions.outlet_radius_mm) + " mm patch)"},
               record.summary());
+  if (options.shape && is_ileal(*options.shape) && !regions.outlet)
+    // The urethral anastomosis: a tube's lowest line has no single lowest point.
+    regions.outlet = ileal_geometry(*options.shape).outlet_mm + options.shape->center_mm;
   if (options.shape && options.shape->kind == ShapeKind::Pouch && !regions.outlet)
     // The neck's rounded end: a quarter circle of the neck radius from the lowest point.
     regions.outlet_radius_mm =
