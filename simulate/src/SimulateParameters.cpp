@@ -89,6 +89,9 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
       "image prestressed at image_pressure_cmh2o");
   t.number("residual_ml", w.residual_ml, "ml", NumberRange::at_least(1).at_most(5000),
            "stress-free (residual) volume of the scaled reference");
+  t.number("residual_fraction", w.residual_fraction, "-",
+           NumberRange::greater_than(0).at_most(1).or_value(0, "use residual_ml"),
+           "stress-free volume as a fraction of the mesh's (a neobladder's retracted tissue)");
   t.number("image_pressure_cmh2o", p.image_pressure_cmh2o, "cmH2O",
            NumberRange::at_least(0).at_most(200),
            "pressure of the imaged bladder (reference prestress)");
@@ -117,6 +120,9 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
   const NumberRange volume = NumberRange::greater_than(0).at_most(5000);
   t.number("start_ml", p.start_ml, "ml", volume, "volume at the start of filling");
   t.number("capacity_ml", p.capacity_ml, "ml", volume, "cystometric capacity (end of filling)");
+  t.number("fill_limit_cmh2o", p.fill_limit_cmh2o, "cmH2O",
+           NumberRange::greater_than(0).at_most(200).or_value(0, "fill to capacity_ml"),
+           "filling also ends when Pdet reaches this (a study's pressure limit)");
   t.number("fill_rate_ml_min", p.fill_rate_ml_min, "ml/min",
            NumberRange::at_least(1).at_most(1000).because(
                "at 0 filling never ends; cystometry fills at 10-100 ml/min"),

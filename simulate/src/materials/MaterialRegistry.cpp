@@ -48,16 +48,17 @@ LawDefaults bladder_defaults() {
   return d;
 }
 
-// The ileal neobladder (docs/simulate.md, "Default walls"): the thesis's ileum matrix
-// (mu 1 kPa) with fibers that keep the pouch below its design pressure to 600 ml, the
-// thesis's rate dependence, and no coordinated contraction: it is voided by straining.
+// The ileal neobladder (docs/simulate.md, "Default walls"): a soft, slowly stiffening
+// ileal wall that holds a reservoir's volume at a few cmH2O when its stress-free volume is
+// its retracted tissue's (residual_fraction), the intestine's stress relaxation of
+// seconds, and no coordinated contraction: it is voided by straining.
 LawDefaults neobladder_defaults() {
   LawDefaults d;
-  d.mu = 1e3;
+  d.mu = 2e3;
   d.fibers = true;
-  d.k1 = 3.7e3;
-  d.k2 = 0.5;
-  d.branches = {{0.15, 1e-4}};
+  d.k1 = 200.0;
+  d.k2 = 0.045;
+  d.branches = {{0.2, 10.0}};
   return d;
 }
 

@@ -231,6 +231,9 @@ void CystometryProtocol::fill() {
     dt = std::min(dt, (target - infused_) / q_in);
     const int iterations = advance(dt, q_in, false).iterations;
     record();
+    if (settings_.fill_limit_cmh2o > 0.0 &&
+        result_.history.back().pdet_cmh2o >= settings_.fill_limit_cmh2o)
+      break;
     // An adaptive step grows after an easy one (from the step asked: a cut-back step says
     // only that this point was hard).
     if (rules_.fixed_fill_step_s <= 0.0 && iterations <= kEasyIterations)

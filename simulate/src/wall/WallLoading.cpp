@@ -16,7 +16,10 @@ WallModel load_wall(const std::filesystem::path& path, const WallOptions& option
   WallModel wall = read_wall(path, units::m_from_mm(options.thickness_mm));
   if (options.reference == ReferenceState::Scale) {
     if (!(options.residual_ml > 0.0)) usage_error("residual_ml must be > 0");
-    scale_to_volume(wall, units::m3_from_ml(options.residual_ml));
+    const double residual_m3 = options.residual_fraction > 0.0
+                                   ? options.residual_fraction * enclosed_volume(wall, wall.nodes)
+                                   : units::m3_from_ml(options.residual_ml);
+    scale_to_volume(wall, residual_m3);
   }
   const Eigen::Vector3d down = gravity_lps(options.posture).normalized();
   fix_regions(wall, down, units::m_from_mm(options.fixed_patch_radius_mm));

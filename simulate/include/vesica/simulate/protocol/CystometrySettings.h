@@ -21,6 +21,9 @@ struct ProtocolSettings {
   // Filling (docs/physics.md §7)
   double start_ml = 50.0;
   double capacity_ml = 350.0;
+  // Filling also ends once Pdet reaches this (0: only at capacity_ml): a what-if study
+  // fills a pouch to its pressure limit, its capacity then read from the history.
+  double fill_limit_cmh2o = 0.0;
   double fill_rate_ml_min = 50.0;
   double hold_s = 0.0;
   double pabd_cmh2o = 0.0;  // resting abdominal pressure on the outer wall
