@@ -10,6 +10,7 @@
 #include "vesica/compare/html/PageCheckScript.h"
 #include "vesica/compare/html/SvgPlot.h"
 #include "vesica/pipelines/PouchPicture.h"
+#include "vesica/pipelines/StudyRanking.h"
 
 namespace vesica::pipelines {
 namespace {
@@ -166,15 +167,18 @@ std::string table(const StudyReport& report) {
   const auto keys = report.distinct_parameters();
   const PictureScale scale = picture_scale(report);
   std::ostringstream o;
-  o << "<table id=\"study-table\">\n<tr><th>variant</th><th>answer</th>";
+  o << "<table id=\"study-table\">\n<tr><th>rank</th><th>variant</th><th>answer</th>";
   for (const auto& k : keys) o << "<th>" << parameter_heading(k) << "</th>";
   o << "<th>shape at capacity</th>";
   for (const StudyMetric& m : study_metrics())
     o << "<th>" << xml_escape(m.label) << "<br><small>" << xml_escape(m.unit) << "</small></th>";
   o << "<th>where the max is</th></tr>\n";
-  for (const auto& row : report.rows()) {
+  int rank = 0;
+  for (const std::size_t index : rank_by_capacity(report)) {
+    const StudyRow& row = report.rows()[index];
     const std::string answer = row.status == "ok" ? report.answer(row) : row.status;
-    o << "<tr><td class=\"variant\">" << breakable(label_of(row)) << "</td><td class=\"answer "
+    o << "<tr><td class=\"rank\">" << ++rank << "</td><td class=\"variant\">"
+      << breakable(label_of(row)) << "</td><td class=\"answer "
       << (answer == "not run" ? "not-run" : answer) << "\">"
       << (answer.empty() ? "&ndash;" : xml_escape(answer)) << "</td>";
     for (const auto& k : keys) o << "<td>" << xml_escape(report.parameter(row, k)) << "</td>";
@@ -199,6 +203,10 @@ std::string answer_section(const StudyReport& report) {
   o << "<section class=\"answer\">\n";
   if (!report.question().empty())
     o << "<p class=\"question\"><b>Question:</b> " << xml_escape(report.question()) << "</p>\n";
+  const std::string sentence = capacity_answer(report);
+  if (!sentence.empty())
+    o << "<p class=\"sentence\" id=\"answer-sentence\"><b>Answer:</b> " << xml_escape(sentence)
+      << " The table is ranked by it.</p>\n";
   if (report.limits().empty()) {
     o << "<p>The study file sets no <code>limits:</code>, so no variant is judged pass or "
          "fail.</p>\n</section>\n";
@@ -217,7 +225,7 @@ std::string answer_section(const StudyReport& report) {
     for (const auto& n : names) s += (s.empty() ? "" : ", ") + xml_escape(n);
     return s;
   };
-  o << ".</p>\n<p class=\"verdict\"><b>Answer:</b> " << pass.size() << " of "
+  o << ".</p>\n<p class=\"verdict\"><b>Against the limits:</b> " << pass.size() << " of "
     << report.rows().size() << " variants pass";
   if (!fail.empty()) o << "; fail: " << list(fail);
   if (!open.empty()) o << "; not answered (not reached or not run): " << list(open);

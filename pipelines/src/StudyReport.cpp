@@ -69,6 +69,18 @@ std::string failure_in_run(const RunResult& run, const std::vector<std::size_t>&
   return "";
 }
 
+// The volume of the surface the simulation's chain built (its stage report's volume_ml,
+// ml): the pouch as the surgeon made it, before the simulation scales its reference.
+void read_built_volume(const Plan& plan, const std::vector<std::size_t>& chain, StudyRow& row) {
+  for (std::size_t c : chain) {
+    const PlannedStage& s = plan.stages[c];
+    if (s.tool != "surface" || s.report.empty()) continue;
+    std::ifstream in(plan.in_workdir(s.report));
+    const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+    row.built_volume_ml = json_number(report, "volume_ml");
+  }
+}
+
 // The wall stress at capacity, asked of vesica-compare beside the simulate executable.
 void read_capacity_stress(const PlannedStage& simulate, StudyRow& row) {
   if (row.status != "ok") return;
@@ -124,6 +136,7 @@ StudyReport StudyReport::collect(const Plan& plan, const RunResult* run) {
     read_outputs(row);
     decide_status(row, run ? failure_in_run(*run, chain) : "");
     read_capacity_stress(s, row);
+    read_built_volume(plan, chain, row);
     report.rows_.push_back(std::move(row));
   }
   report.question_ = plan.question;
@@ -185,7 +198,9 @@ StudyValues StudyReport::values(const StudyRow& row) {
   if (!capacity.value && c.size() > 0) capacity = {c.volume_ml[c.filling_end()], true};
   const nlohmann::json stress =
       row.capacity_stress.is_object() ? row.capacity_stress["summary"] : nlohmann::json();
-  return {{"pdet_at_300ml_cmh2o", {filling_pdet_at_volume(c, kLowVolumeMl)}},
+  const bool voided = row.status == "ok";
+  return {{"built_volume_ml", {row.built_volume_ml}},
+          {"pdet_at_300ml_cmh2o", {filling_pdet_at_volume(c, kLowVolumeMl)}},
           {"pdet_at_500ml_cmh2o", {filling_pdet_at_volume(c, kHighVolumeMl)}},
           {"max_pdet_cmh2o", {max_pdet(c)}},
           {"compliance_ml_per_cmh2o", {filling_compliance(c)}},
@@ -193,7 +208,8 @@ StudyValues StudyReport::values(const StudyRow& row) {
           {"qmax_ml_s", {voiding_qmax(c)}},
           // A residual only when voiding ran to its end (a failed run's summary counts
           // the volume where it stopped).
-          {"pvr_ml", {row.status == "ok" ? json_number(row.summary, "pvr_ml") : std::nullopt}},
+          {"voided_ml", {voided ? json_number(row.summary, "voided_ml") : std::nullopt}},
+          {"pvr_ml", {voided ? json_number(row.summary, "pvr_ml") : std::nullopt}},
           // At capacity, not the largest of any frame: a voiding collapse puts one-element
           // spikes into late frames.
           {"stress_p95_at_capacity_kpa", {json_number(stress, "p95_kpa")}},

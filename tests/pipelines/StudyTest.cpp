@@ -5,6 +5,7 @@
 #include "PipelineTestSupport.h"
 #include "vesica/pipelines/Plan.h"
 #include "vesica/pipelines/StudyAnswer.h"
+#include "vesica/pipelines/StudyRanking.h"
 #include "vesica/pipelines/StudyReport.h"
 
 namespace fs = std::filesystem;
@@ -126,15 +127,16 @@ TEST(Study, TableHasOneRowPerVariantWithFailures) {
   const auto report = vesica::pipelines::StudyReport::collect(plan);
   ASSERT_EQ(report.rows().size(), 3u);
   EXPECT_EQ(report.to_csv(),
-            "variant,status,answer,sim.mu_kpa,pdet_at_300ml_cmh2o,pdet_at_500ml_cmh2o,"
-            "max_pdet_cmh2o,compliance_ml_per_cmh2o,capacity_at_40cmh2o_ml,qmax_ml_s,pvr_ml,"
+            "variant,status,answer,sim.mu_kpa,built_volume_ml,pdet_at_300ml_cmh2o,"
+            "pdet_at_500ml_cmh2o,max_pdet_cmh2o,compliance_ml_per_cmh2o,capacity_at_40cmh2o_ml,"
+            "qmax_ml_s,voided_ml,pvr_ml,"
             "stress_p95_at_capacity_kpa,stress_max_at_capacity_kpa,stress_max_where,failure\n"
-            "mu_kpa-5,not run,,5,,,,,,,,,,,no summary.json yet\n"
+            "mu_kpa-5,not run,,5,,,,,,,,,,,,,no summary.json yet\n"
             // 40 cmH2O between 400 ml @ 30 and 450 ml @ 50; compliance 400 ml / 60 cmH2O; no
             // series, so no stress at capacity
-            "mu_kpa-8,ok,,8,10,60,65,6.66667,425,20,439,,,,\n"
+            "mu_kpa-8,ok,,8,,10,60,65,6.66667,425,20,,439,,,,\n"
             // never reached 300 ml; capacity above the 200 ml reached; 100 ml / 5 cmH2O
-            "mu_kpa-12,failed,,12,,,5,20,>200,,,,,,"
+            "mu_kpa-12,failed,,12,,,,5,20,>200,,,,,,,"
             "\"step failed at t = 120 s, V = 200 ml: stalled\"\n");
 }
 
@@ -249,4 +251,46 @@ TEST(Study, AStageThatFailsAfterWritingRunsAgainNextTime) {
   EXPECT_EQ(run_json(dir / "s.yaml", dir, "", &code), Ids{});  // it runs again (and fails)
   EXPECT_EQ(code, 1);
   EXPECT_FALSE(fs::exists(dir / ".vesica/backup"));  // its own results, nobody's edit
+}
+
+// The page's answer ranks the variants by their capacity under 40 cmH2O, worked out by
+// hand from hand-written histories: "tube" reaches 40 cmH2O at 350 ml (between 300 ml @ 20
+// and 400 ml @ 60), "pouch" and "sphere" stay below it to 800 ml (lower bounds), the
+// sphere with the lower Pdet at 500 ml (6 against 8 cmH2O).
+TEST(Study, AnswerRanksVariantsByCapacityUnderTheLimit) {
+  const fs::path dir = scratch_dir("study-ranking");
+  const std::string yaml =
+      "stages:\n"
+      "  sim: {tool: simulate, output: sim, params: {mu_kpa: 5, no_series: true}}\n"
+      "study:\n"
+      "  variants: {tube: {sim.mu_kpa: 1}, pouch: {sim.mu_kpa: 2}, sphere: {sim.mu_kpa: 3}}\n";
+  vesica::pipelines::Diagnostics d;
+  const auto plan = vesica::pipelines::build_plan(
+      vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
+  ASSERT_TRUE(d.empty()) << d.format("r.yaml");
+  const std::string header = "time_s,volume_ml,pdet_cmh2o,flow_ml_s\n";
+  const auto write = [&](const std::string& run, const std::string& rows) {
+    write_text(dir / "variants" / run / "sim/summary.json", R"({"completed": true})");
+    write_text(dir / "variants" / run / "sim/history.csv", header + rows);
+  };
+  write("tube", "0,50,10,0\n300,300,20,0\n400,400,60,0\n");
+  write("pouch", "0,50,1,0\n540,500,8,0\n900,800,12,0\n");
+  write("sphere", "0,50,1,0\n540,500,6,0\n900,800,10,0\n");
+  const auto report = vesica::pipelines::StudyReport::collect(plan);
+  const auto order = vesica::pipelines::rank_by_capacity(report);
+  ASSERT_EQ(order.size(), 3u);
+  EXPECT_EQ(report.rows()[order[0]].variant, "sphere");
+  EXPECT_EQ(report.rows()[order[1]].variant, "pouch");
+  EXPECT_EQ(report.rows()[order[2]].variant, "tube");
+  EXPECT_EQ(vesica::pipelines::capacity_answer(report),
+            "Largest capacity under 40 cmH2O: sphere (at least 800 ml, never reaching the "
+            "limit), as did pouch (ranked by their lower Pdet at 500 ml); smallest: tube "
+            "(350 ml).");
+
+  // Without the tube, no filling came within a quarter of the limit: the answer says so.
+  write("tube", "0,50,1,0\n540,500,7,0\n900,800,11,0\n");
+  EXPECT_EQ(vesica::pipelines::capacity_answer(vesica::pipelines::StudyReport::collect(plan)),
+            "No variant approached the 40 cmH2O limit: the highest filling Pdet of any was "
+            "12.0 cmH2O, and every pouch held at least 800 ml below it; the ranking follows "
+            "Pdet at 500 ml.");
 }

@@ -25,13 +25,14 @@ struct StudyRow {
   // "stage.param" -> value for the simulate stage and every stage it reads from, in
   // pipeline order (flags read "true").
   std::vector<std::pair<std::string, std::string>> parameters;
-  std::filesystem::path simulation;      // the simulate stage's output folder
-  nlohmann::json summary;                // summary.json, or null when absent
-  std::filesystem::path history_csv;     // empty when absent
-  std::optional<CystometryCurve> curve;  // history.csv, when it could be read
-  nlohmann::json capacity_stress;        // CapacityStress.h, null without a series
-  std::string status = "not run";        // ok | failed | not run
-  std::string failure;                   // why, when status is not ok
+  std::filesystem::path simulation;       // the simulate stage's output folder
+  nlohmann::json summary;                 // summary.json, or null when absent
+  std::filesystem::path history_csv;      // empty when absent
+  std::optional<CystometryCurve> curve;   // history.csv, when it could be read
+  nlohmann::json capacity_stress;         // CapacityStress.h, null without a series
+  std::optional<double> built_volume_ml;  // the surface stage's report: the pouch as built
+  std::string status = "not run";         // ok | failed | not run
+  std::string failure;                    // why, when status is not ok
 };
 
 class StudyReport {
@@ -42,9 +43,9 @@ class StudyReport {
   const std::vector<StudyRow>& rows() const { return rows_; }
 
   // study.csv: variant, status, answer (pass | fail | empty), the parameters that differ
-  // between runs, then the read-outs of StudyMetrics.h: pdet_at_300ml_cmh2o,
+  // between runs, then the read-outs of StudyMetrics.h: built_volume_ml, pdet_at_300ml_cmh2o,
   // pdet_at_500ml_cmh2o, max_pdet_cmh2o, compliance_ml_per_cmh2o, capacity_at_40cmh2o_ml
-  // (">V" when Pdet stayed below 40 up to the largest volume V), qmax_ml_s, pvr_ml,
+  // (">V" when Pdet stayed below 40 up to the largest volume V), qmax_ml_s, voided_ml, pvr_ml,
   // stress_p95_at_capacity_kpa, stress_max_at_capacity_kpa; then stress_max_where and
   // failure. Empty cells: not reached / not run.
   std::string to_csv() const;
