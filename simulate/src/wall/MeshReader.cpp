@@ -11,7 +11,7 @@
 #include "vesica/io/MshFile.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
-#include "vesica/mesh/MembraneFields.h"
+#include "vesica/mesh/EditedMesh.h"
 #include "vesica/mesh/SurfaceReader.h"
 
 namespace vesica::simulate {
@@ -53,29 +53,20 @@ io::VolumeMesh read_mesh(const std::filesystem::path& path) {
 }
 
 // The mesh stage's thickness and fibers for a mesh whose file has none (a .msh saved by
-// Gmsh after an edit): the same function, with its default direction. Said in a warning
-// naming the fields, since the wall then has the default thickness everywhere.
-void complete_membrane_fields(double default_thickness_m, io::VolumeMesh& m,
-                              const std::string& file) {
-  mesh::SurfaceMesh surface{m.nodes, m.triangles, m.tri_region};
+// Gmsh after an edit), with its default direction; said in a warning naming the fields,
+// since the wall then has the default thickness everywhere.
+void fill_in_membrane_fields(double default_thickness_m, io::VolumeMesh& m,
+                             const std::string& file) {
   mesh::MembraneOptions options;
   options.thickness_mm = units::mm_from_m(default_thickness_m);
-  const mesh::MembraneFields fields = mesh::membrane_fields(surface, options);
-  std::string recomputed;
-  if (m.thickness_mm.size() != m.triangles.rows()) {
-    m.thickness_mm = fields.thickness_mm;
-    recomputed = fmt::format("thickness_mm ({:g} mm everywhere)", options.thickness_mm);
-  }
-  if (m.fiber1.rows() != m.triangles.rows()) {
-    m.fiber1 = fields.fiber1;
-    m.fiber2 = fields.fiber2;
-    recomputed += (recomputed.empty() ? "" : ", ") + std::string("fiber1, fiber2");
-  }
-  if (!recomputed.empty())
+  std::string filled;
+  for (const std::string& f : vesica::mesh::complete_membrane_fields(m, options))
+    filled += (filled.empty() ? "" : ", ") + f;
+  if (!filled.empty())
     vesica::log()->warn(
         "{}: has no {} (Gmsh drops them when it saves an edit): recomputed as "
         "vesica-mesh does",
-        file, recomputed);
+        file, filled);
 }
 
 // vesica-mesh writes a .vtu beside its .msh for ParaView; after an edit in Gmsh that file
@@ -147,7 +138,7 @@ WallModel read_wall(const std::filesystem::path& path, double default_thickness_
     fail(path.string(), "contains no triangles", "the wall must be a triangle surface");
   detail::check_wall_surface(m, path.string());
   if (source_of(path) == Source::Msh) {
-    complete_membrane_fields(default_thickness_m, m, path.string());
+    fill_in_membrane_fields(default_thickness_m, m, path.string());
     warn_if_vtu_beside_is_stale(path, m);
   }
   WallModel wall;
