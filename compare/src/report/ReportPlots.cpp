@@ -1,5 +1,5 @@
-// The report's three plots: filling Pdet against volume (with the normal end-filling band
-// only over the volumes where it is defined), flow against time since the onset of flow,
+// The report's three plots: filling Pdet against volume (no reference band: none with a
+// published source was found), flow against time since the onset of flow,
 // and pressure-flow with axes sized to the data and the nomogram lines of the patient's sex.
 #include "report/ReportParts.h"
 #include "vesica/compare/analysis/ModelComparison.h"
@@ -28,8 +28,6 @@ Curve flagged_points(const RecordingAnalysis& a) {
 std::string filling_plot(const ReportInputs& in) {
   SvgPlot plot("Filling: Pdet against volume", "bladder volume (ml)", "Pdet (cmH2O)");
   plot.id("plot-filling").size(kWidth, kHeight).legend_below();
-  // docs/physics.md §7.3: normal end-filling Pdet 6-10 cmH2O, defined at 300-500 ml only
-  plot.add_box(300, 500, 6, 10, "normal end-filling Pdet (300-500 ml)");
   if (in.calibration)
     plot.add_vband(in.calibration->volume_lo_ml, in.calibration->volume_hi_ml, "fitted volumes",
                    "#cccccc");
