@@ -22,10 +22,10 @@ bool follow_kept_mesh_edit(const Plan& plan, std::size_t index,
   if (const auto done = read_stage_manifest(record);
       done && done->readable() && !done->inputs.empty() && done->inputs.front().hash == now.hash)
     return true;
-  say("vesica: " + s.id + ": " + vtu.filename().string() + " follows your edit of " +
-      s.output);
+  say("vesica: " + s.id + ": " + vtu.filename().string() + " follows your edit of " + s.output);
   try {
-    ChildProcess tool(s.executable, {msh.string(), "-o", msh.string(), "--manifest", record.string()},
+    ChildProcess tool(s.executable,
+                      {msh.string(), "-o", msh.string(), "--manifest", record.string()},
                       plan.workdir);
     ChildOutput out;
     for (bool open = true; open;) {

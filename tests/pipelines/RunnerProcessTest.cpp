@@ -203,10 +203,10 @@ TEST(RunnerProcess, AnInstalledPipelineWritesUnderTheCurrentFolder) {
   const fs::path installed = prefix / "share/vesica/pipelines";
   fs::create_directories(installed);
   const fs::path file = two_stages(installed, "label: B");
-  const CommandResult r = run_command(
-      "cd " + quoted(here.string()) + " && " + quoted((prefix / "bin/vesica").string()) +
-          " run " + quoted(file.string()),
-      dir);
+  const CommandResult r =
+      run_command("cd " + quoted(here.string()) + " && " +
+                      quoted((prefix / "bin/vesica").string()) + " run " + quoted(file.string()),
+                  dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(here / "p" / "b.txt")) << r.err;  // ./<pipeline name>
   EXPECT_FALSE(fs::exists(installed / "out"));
