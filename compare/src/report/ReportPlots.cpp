@@ -120,9 +120,13 @@ std::string pressure_flow_plot(const ReportInputs& in) {
   if (in.measured) add_pressure_flow(plot, *in.measured, "measured", kMeasured, true);
   if (in.simulated) add_pressure_flow(plot, *in.simulated, "simulated", kSimulated, false);
   add_nomogram(plot, in.patient.sex);
-  const char* lines = in.patient.sex == Sex::male     ? " with the ICS nomogram lines for men."
-                      : in.patient.sex == Sex::female ? " with the BOOIf lines for women."
-                                                      : "; sex not stated, so no nomogram.";
+  // Each line's source, in short; the full references are under the criteria table.
+  const char* lines =
+      in.patient.sex == Sex::male
+          ? " with the ICS nomogram lines for men (Abrams, BJU Int 1999;84:14-15)."
+      : in.patient.sex == Sex::female
+          ? " with the BOOIf lines for women (Solomon et al., Neurourol Urodyn 2018;37:368-378)."
+          : "; sex not stated, so no nomogram.";
   std::string caption = std::string("Pdet against flow while voiding (unflagged rows)") + lines;
   if (in.simulated) caption += " Simulated: " + simulated_voiding_label(in) + ".";
   return figure(plot, caption);
