@@ -155,12 +155,13 @@ void write_vtu(const VtuGrid& g, const std::filesystem::path& path,
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(grid);
     writer->SetDataModeToAppended();
-    if (options.compress) {
+    // Base64, not raw bytes: meshio's reader of raw appended data finds each array by its
+    // offset after renumbering earlier ones, and takes the wrong array when the numbers meet.
+    writer->EncodeAppendedDataOn();
+    if (options.compress)
       writer->SetCompressorTypeToZLib();
-    } else {
+    else
       writer->SetCompressorTypeToNone();
-      writer->EncodeAppendedDataOff();  // raw bytes: no base64 pass
-    }
     const auto errors = detail::watch_errors(writer);
     if (writer->Write() != 1 || errors->any() || writer->GetErrorCode() != vtkErrorCode::NoError)
       fail(path.string(), "could not write the VTU file: " +

@@ -44,6 +44,9 @@ out = {"points": [list(map(float, p)) for p in m.points],
 for name in ("thickness_mm", "region"):
     if name in m.cell_data:
         out[name] = [float(v) for block in m.cell_data[name] for v in block]
+out["point_arrays"] = {k: [float(x) for x in v.ravel()[:3]] + [len(v)]
+                       for k, v in m.point_data.items()}
+out["field"] = {k: [float(x) for x in v.ravel()] for k, v in m.field_data.items()}
 print(json.dumps(out))
 )";
 
@@ -186,7 +189,10 @@ TEST(MeshFiles, MeshioReadsTheMeshVtuAndEverySeriesStep) {
     frame.point_data.push_back(
         {"displacement_mm", 3, std::vector<double>(m.nodes.size(), 0.5), false});
     frame.cell_data.push_back({"region", 1, std::vector<double>(m.triangles.rows(), 1.0), true});
+    // The field arrays of a simulation's step, then its displacement: meshio once took the
+    // one for the other when they were raw bytes.
     frame.field_data.push_back({"volume_ml", 1, {100.0 + step}, false});
+    frame.field_data.push_back({"pdet_cmh2o", 1, {8.5}, false});
     series.add_step(2.0 * step, frame);
   }
   series.finish();
@@ -195,7 +201,13 @@ TEST(MeshFiles, MeshioReadsTheMeshVtuAndEverySeriesStep) {
     EXPECT_EQ(s.value("triangles", -1), m.triangles.rows()) << file;
     ASSERT_TRUE(s.contains("region")) << file;
     EXPECT_EQ(s["region"][0].get<double>(), 1.0) << file;
-    EXPECT_EQ(s["names"], nlohmann::json({"length_unit_m", "time_s", "volume_ml"})) << file;
+    EXPECT_EQ(s["names"], nlohmann::json({"length_unit_m", "pdet_cmh2o", "time_s", "volume_ml"}))
+        << file;
+    EXPECT_EQ(s["field"]["length_unit_m"], nlohmann::json({1e-3})) << file;
+    EXPECT_EQ(s["field"]["time_s"], nlohmann::json({time_s})) << file;
+    EXPECT_EQ(s["point_arrays"]["displacement_mm"],
+              nlohmann::json({0.5, 0.5, 0.5, static_cast<double>(m.nodes.rows())}))
+        << file;
   }
 }
 
