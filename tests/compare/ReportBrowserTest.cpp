@@ -176,7 +176,7 @@ TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
   EXPECT_GT(std::stod(ink), 0.05) << "the canvas is blank";
   // The slider's ends: the first frame (t = 0 s) and the last (390 s) put the cursor at the
   // trace's left and further right; the capacity frame (360 s) is labelled as such.
-  EXPECT_EQ(body_data(dom.output, "wall3d-capacity-label").rfind("capacity frame: t = 360 s", 0),
+  EXPECT_EQ(body_data(dom.output, "wall3d-capacity-label").rfind("nearest capacity: t = 360 s", 0),
             0u)
       << body_data(dom.output, "wall3d-capacity-label");
   const double first = std::stod(body_data(dom.output, "wall3d-first-cursor"));

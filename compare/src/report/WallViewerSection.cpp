@@ -122,7 +122,7 @@ const char* kViewerScript = R"JS(
     geometry.attributes.color.needsUpdate = true;
     geometry.computeBoundingSphere();
     var f = fr.f;
-    label.textContent = (i === data.capacity_frame ? 'capacity frame: ' : '') + 't = ' +
+    label.textContent = (i === data.capacity_frame ? 'nearest capacity: ' : '') + 't = ' +
         f.time_s.toFixed(0) + ' s, V = ' + fixed(f.volume_ml, 0) + ' ml, Pdet = ' +
         fixed(f.pdet_cmh2o, 1) + ' cmH2O';
     bar.textContent = (q === 'sigma1' ? 'sigma1 (kPa) ' : 'larger principal stretch ') +
