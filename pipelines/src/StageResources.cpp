@@ -180,8 +180,18 @@ MeshSize mesh_size_for(const Plan& plan, std::size_t index) {
     // Isotropic remeshing to edge h leaves a closed surface of area A with about 2.8 A / h²
     // triangles (their mean edge comes out a little shorter than the target); the sphere's
     // area is the least a surface of that volume can have.
-    const double v_mm3 = volume_ml * 1e3;
-    const double area_mm2 = std::cbrt(36.0 * kPi * v_mm3 * v_mm3);
+    double v_mm3 = volume_ml * 1e3;
+    double area_mm2 = std::cbrt(36.0 * kPi * v_mm3 * v_mm3);
+    // A neobladder built from ileum has the segment's area, L x C (docs/surface.md); its
+    // volume is at most the sphere's of that area.
+    const double ileum_cm = number(s, "ileum_length_cm", 0.0);
+    if (given(s, "shape") && ileum_cm > 0.0) {
+      area_mm2 =
+          100.0 * ileum_cm *
+          number(s, "ileum_circumference_cm", table_default(s, "ileum_circumference_cm", 8.0));
+      v_mm3 = std::pow(area_mm2, 1.5) / (6.0 * std::sqrt(kPi));
+      volume_ml = v_mm3 / 1e3;
+    }
     const double edge_mm = number(s, "edge_mm", 4.0);
     size.triangles = number(s, "target_triangles", 0.0) > 0.0
                          ? number(s, "target_triangles", 0.0)

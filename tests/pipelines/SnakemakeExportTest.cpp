@@ -3,6 +3,9 @@
 // keeps an edited intermediate as `vesica run` does.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+
 #include "PipelineTestSupport.h"
 #include "vesica/core/ContentHash.h"
 
@@ -109,4 +112,41 @@ TEST(SnakemakeExport, SnakemakeKeepsAnEditedIntermediateAsTheNativeRunnerDoes) {
   const auto again = snakemake(file, native, dir);
   EXPECT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(slurp(native / "c.txt"), "b edited by hand\nC\n");
+}
+
+// The shipped neobladder study on a cluster: Snakemake reads its export and plans every
+// stage of the 12 variants (a dry run: the study itself is `bench/bench_study.sh`'s), and
+// each variant's simulation asks for the resources of its own pouch: a 60 cm tube has
+// 1.5 times the 40 cm tube's tissue (L x C), so more triangles and more time.
+TEST(SnakemakeExport, TheNeobladderStudyPlansEveryVariantWithItsOwnResources) {
+  const fs::path dir = scratch_dir("snakemake-neobladder");
+  VESICA_REQUIRE_SNAKEMAKE(dir);
+  const fs::path file = source_dir() / "pipelines" / "neobladder-whatif.yaml";
+  const auto exported = run_vesica("export --snakemake " + quoted(file.string()) + " --workdir " +
+                                       quoted((dir / "work").string()),
+                                   dir);
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  write_text(dir / "Snakefile", exported.out);
+  const auto dry =
+      run_command("cd " + quoted(dir.string()) + " && snakemake -s Snakefile -n --cores 2", dir);
+  ASSERT_EQ(dry.exit_code, 0) << dry.err << dry.out;
+  EXPECT_NE((dry.out + dry.err).find("36"), std::string::npos) << dry.out << dry.err;
+  // The comment line above each rule's resources names the size it was estimated from.
+  const auto basis = [&](const std::string& variant) {
+    const std::string rule = "if \"simulate@shape-" + variant + "\" not in EDITED";
+    const std::size_t at = exported.out.find(rule);
+    if (at == std::string::npos) return std::string("nan");
+    const std::size_t from = exported.out.find(" on about ", at) + 10;
+    const std::size_t to = exported.out.find(" triangles", from);
+    std::string n = exported.out.substr(from, to - from);  // "2,489"
+    n.erase(std::remove(n.begin(), n.end(), ','), n.end());
+    return n;
+  };
+  const double tube40 = std::stod(basis("tubular_ileum_length_cm-40"));
+  const double tube60 = std::stod(basis("tubular_ileum_length_cm-60"));
+  std::printf("[ snakemake ] simulate resources from about %.0f and %.0f triangles\n", tube40,
+              tube60);
+  EXPECT_NEAR(tube60 / tube40, 1.5, 0.05);
+  // vesica-surface makes 2,424 triangles of the 40 cm tube at 6 mm edges.
+  EXPECT_NEAR(tube40, 2424, 0.1 * 2424);
 }
