@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Times the neobladder what-if study (pipelines/neobladder-whatif.yaml: 8 variants, each
-# surface -> mesh -> simulate) end to end with `vesica run -j 2 --keep-going` in a fresh
-# workdir, then (when every variant completed) a second, no-op run. Target: < 180 s end to end on 2 cores. Prints one JSON
-# object: total and no-op seconds, the seconds of each stage copy and their sum per stage,
-# and each variant's status and read-outs from study.csv (units in the column names).
+# Times the neobladder what-if study (pipelines/neobladder-whatif.yaml: 12 variants, ileum
+# length x folding, each surface -> mesh -> simulate) end to end with `vesica run -j 2
+# --keep-going` in a fresh workdir, then (when every variant completed) a second, no-op
+# run. Targets (issue 34): < 600 s end to end on 2 cores, the no-op rerun < 1 s. Prints one
+# JSON object: total and no-op seconds, the seconds of each stage copy and their sum per
+# stage, and each variant's status and read-outs from study.csv (units in the column names).
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 here=$(cd "$(dirname "$0")/.." && pwd)
