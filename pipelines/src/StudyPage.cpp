@@ -233,8 +233,27 @@ std::string answer_section(const StudyReport& report) {
   return o.str();
 }
 
+// Which model level ran (docs/physics.md §4.1, §11), from the parameters that ran: the
+// sphere-equivalent (level 0) is exact for a sphere only, so a reader must know.
+std::string level_note(const StudyReport& report) {
+  std::set<std::string> levels;
+  for (const auto& row : report.rows()) {
+    const std::string given = report.parameter(row, "simulate.level");
+    levels.insert(given.empty() ? "1" : given);
+  }
+  std::string list;
+  for (const auto& l : levels) list += (list.empty() ? "" : ", ") + l;
+  return "<p class=\"note\">Model level: " + xml_escape(list) +
+         (levels.count("0") ? " (level 0 is the wall's sphere-equivalent: exact for a sphere, "
+                              "blind to any other shape)"
+                            : " (the 3-D membrane wall with hydrostatic urine: every shape as "
+                              "built)") +
+         ".</p>\n";
+}
+
 std::string notes(const StudyReport& report) {
   std::ostringstream o;
+  o << level_note(report);
   std::vector<std::pair<std::string, std::string>> repeats;
   report.distinct_parameters(&repeats);
   if (!repeats.empty()) {

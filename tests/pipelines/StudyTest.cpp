@@ -28,6 +28,15 @@ std::string study_yaml(const std::string& stiff_label) {
          "    late: {c.label: C9}\n";
 }
 
+// The plan of a pipeline file's text in `dir` (its diagnostics a test failure).
+vesica::pipelines::Plan plan_of(const std::string& yaml, const fs::path& dir) {
+  vesica::pipelines::Diagnostics d;
+  auto plan = vesica::pipelines::build_plan(
+      vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
+  EXPECT_TRUE(d.empty()) << d.format("r.yaml");
+  return plan;
+}
+
 }  // namespace
 
 TEST(Study, VariantsShareCommonUpstreamStages) {
@@ -109,10 +118,7 @@ TEST(Study, TableHasOneRowPerVariantWithFailures) {
       "  sim: {tool: simulate, output: sim, params: {mu_kpa: 5, no_series: true}}\n"
       "study:\n"
       "  matrix: {sim.mu_kpa: [5, 8, 12]}\n";
-  vesica::pipelines::Diagnostics d;
-  const auto plan = vesica::pipelines::build_plan(
-      vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
-  ASSERT_TRUE(d.empty()) << d.format("r.yaml");
+  const auto plan = plan_of(yaml, dir);
   const std::string header = "time_s,volume_ml,pdet_cmh2o,flow_ml_s\n";
   write_text(dir / "variants/mu_kpa-8/sim/summary.json",
              R"({"completed": true, "qmax_ml_s": 20, "pvr_ml": 439, "max_wall_stress_kpa": 31})");
@@ -195,10 +201,7 @@ TEST(Study, TableNamesTheFailureOfTheRunThatJustHappened) {
       "study:\n"
       "  variants: {thin: {mesh.thickness_mm: 2}, soft: {sim.mu_kpa: 1}}\n";
   write_text(dir / "in.vtp", "");
-  vesica::pipelines::Diagnostics d;
-  const auto plan = vesica::pipelines::build_plan(
-      vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
-  ASSERT_TRUE(d.empty()) << d.format("r.yaml");
+  const auto plan = plan_of(yaml, dir);
   vesica::pipelines::RunResult run;
   for (const auto& s : plan.stages) {
     vesica::pipelines::StageOutcome o;
@@ -264,10 +267,7 @@ TEST(Study, AnswerRanksVariantsByCapacityUnderTheLimit) {
       "  sim: {tool: simulate, output: sim, params: {mu_kpa: 5, no_series: true}}\n"
       "study:\n"
       "  variants: {tube: {sim.mu_kpa: 1}, pouch: {sim.mu_kpa: 2}, sphere: {sim.mu_kpa: 3}}\n";
-  vesica::pipelines::Diagnostics d;
-  const auto plan = vesica::pipelines::build_plan(
-      vesica::pipelines::parse_pipeline_text(yaml, dir / "r.yaml", d), {dir, bin_dir()}, d);
-  ASSERT_TRUE(d.empty()) << d.format("r.yaml");
+  const auto plan = plan_of(yaml, dir);
   const std::string header = "time_s,volume_ml,pdet_cmh2o,flow_ml_s\n";
   const auto write = [&](const std::string& run, const std::string& rows) {
     write_text(dir / "variants" / run / "sim/summary.json", R"({"completed": true})");

@@ -54,14 +54,9 @@ TEST_P(IlealPouch, KeepsTheTissueAreaOfTheSegmentAndJoinsTheUrethraAtTheBottom) 
               surface::enclosed_volume(s.V, s.F) / 1e3, static_cast<int>(s.F.rows()));
   EXPECT_NEAR(area / tissue_mm2, 1.0, 0.02);
   EXPECT_TRUE(surface::check_surface(s).passed()) << surface::check_surface(s).first_failure();
-  const double z_min = s.V.col(2).minCoeff();
-  int outlet = 0;
-  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
-    if (s.region(f) == static_cast<int>(Region::Outlet)) {
-      ++outlet;
-      for (int k = 0; k < 3; ++k) EXPECT_LT(s.V(s.F(f, k), 2) - z_min, 6.0);
-    }
-  EXPECT_GT(outlet, 0);
+  const OutletPatch outlet = outlet_patch(s);
+  EXPECT_GT(outlet.triangles, 0);
+  EXPECT_LT(outlet.max_height_mm, 6.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(IlealShapes, IlealPouch,

@@ -51,14 +51,9 @@ TEST_P(WhatIfShape, ExactVolumeCheckedAndOutletAtTheBottom) {
   const Eigen::VectorXd angles = surface::triangle_min_angles_deg(s.V, s.F);
   EXPECT_GE((angles.array() >= 25.0).cast<double>().mean(), 0.99);
   // Outlet: a patch around the lowest point (LPS: smallest z).
-  const double z_min = s.V.col(2).minCoeff();
-  int outlet = 0;
-  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
-    if (s.region(f) == static_cast<int>(Region::Outlet)) {
-      ++outlet;
-      for (int k = 0; k < 3; ++k) EXPECT_LT(s.V(s.F(f, k), 2) - z_min, 15.0);
-    }
-  EXPECT_GT(outlet, 0);
+  const OutletPatch outlet = outlet_patch(s);
+  EXPECT_GT(outlet.triangles, 0);
+  EXPECT_LT(outlet.max_height_mm, 15.0);
   if (c.kind == ShapeKind::Ellipsoid) {  // (r, r, e r): z extent over x extent
     EXPECT_NEAR(extent(s).z() / extent(s).x(), c.elongation, 0.03 * c.elongation);
   }

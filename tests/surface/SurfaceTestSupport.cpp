@@ -12,6 +12,7 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include "vesica/core/Regions.h"
 #include "vesica/surface/VtkConversion.h"
 
 namespace vesica::test {
@@ -74,6 +75,18 @@ surface::TriangleSurface run_stage(const surface::SurfaceStageOptions& options,
   surface::TriangleSurface s = surface::run_surface_stage(options, record);
   if (summary) *summary = record.summary();
   return s;
+}
+
+OutletPatch outlet_patch(const surface::TriangleSurface& s) {
+  OutletPatch patch;
+  const double z_min = s.V.col(2).minCoeff();
+  for (Eigen::Index f = 0; f < s.F.rows(); ++f)
+    if (s.region(f) == static_cast<int>(Region::Outlet)) {
+      ++patch.triangles;
+      for (int k = 0; k < 3; ++k)
+        patch.max_height_mm = std::max(patch.max_height_mm, s.V(s.F(f, k), 2) - z_min);
+    }
+  return patch;
 }
 
 }  // namespace vesica::test

@@ -23,6 +23,14 @@ Eigen::MatrixXd surface_samples(const surface::TriangleSurface& s);
 std::string vtp_region_array_class(const std::string& path);
 std::string vtp_units(const std::string& path);
 
+// Outlet-tagged triangles, and the largest height of any of their vertices above the
+// surface's lowest point (LPS: smallest z).
+struct OutletPatch {
+  int triangles = 0;
+  double max_height_mm = 0.0;
+};
+OutletPatch outlet_patch(const surface::TriangleSurface& s);
+
 // Runs the stage as the executable would, with a throw-away record.
 surface::TriangleSurface run_stage(const surface::SurfaceStageOptions& options,
                                    nlohmann::json* summary = nullptr);
