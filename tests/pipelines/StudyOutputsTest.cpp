@@ -277,6 +277,11 @@ TEST_F(StudyOutputs, PageAnswersTheQuestionAndFitsA1280Window) {
   EXPECT_LE(std::stoi(body("table-right")), 1280);
   EXPECT_NE(dom.out.find("Which pouch stays under 40 cmH2O at 500 ml?"), std::string::npos);
   EXPECT_NE(dom.out.find("4 of 4 variants pass"), std::string::npos);
+  // Neo-Hookean pouches of mu 1-2 kPa read a few cmH2O at most (thin sphere, P = 2 (H/R) mu
+  // (1/lambda - 1/lambda^7) < 2.5 cmH2O): the answer says none came near 40 cmH2O, and the
+  // table is ranked, the first row rank 1.
+  EXPECT_NE(dom.out.find("No variant approached the 40 cmH2O limit"), std::string::npos);
+  EXPECT_NE(dom.out.find("<td class=\"rank\">1</td>"), std::string::npos);
   for (const char* variant : {"soft", "stiff", "large", "oblong"})
     EXPECT_NE(dom.out.find(std::string("<td class=\"variant\">") + variant + "</td>"),
               std::string::npos)
