@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace vesica::io {
 namespace {
@@ -91,6 +92,7 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
                    const std::function<void(const CsvHeader&)>& on_header,
                    const std::function<void(const std::vector<std::string>&, int)>& on_row) {
   const std::string file = csv.string();
+  require_input_file(csv, kMaxTableFileBytes, "table");  // no pipe, no device, bounded
   std::ifstream in(csv, std::ios::binary);
   if (!in) fail(file, "cannot open the table", "check the path");
   CsvHeader header;
@@ -121,6 +123,26 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
   }
   if (in.bad()) fail(file, "could not be read to the end");
   if (!have_header) fail(file, "no header row", "the first non-comment line names the columns");
+}
+
+std::vector<std::string> read_leading_comments(const std::filesystem::path& csv,
+                                               std::size_t max_lines) {
+  const std::string file = csv.string();
+  require_input_file(csv, kMaxTableFileBytes, "table");
+  std::ifstream in(csv, std::ios::binary);
+  std::vector<std::string> comments;
+  std::string text;
+  std::vector<char> buffer;
+  for (int line = 1;
+       comments.size() < max_lines && next_line(in, buffer, kMaxCsvLineBytes, line, file, text);
+       ++line) {
+    if (line == 1) skip_byte_order_mark(text);
+    const std::string t = trim(text);
+    if (t.empty()) continue;
+    if (t[0] != '#') break;  // the column header: the comments are over
+    comments.push_back(t.substr(1));
+  }
+  return comments;
 }
 
 CsvTable read_csv_table(const std::filesystem::path& csv, const CsvOptions& options) {
