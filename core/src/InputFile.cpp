@@ -110,4 +110,22 @@ std::string read_input_file(const std::filesystem::path& path, std::uintmax_t ma
   return bytes;
 }
 
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes) {
+  line.clear();
+  if (!in.good()) return LineRead::End;
+  line.resize(max_bytes + 2);  // room for one byte too many, and the terminator
+  in.getline(line.data(), static_cast<std::streamsize>(line.size()));
+  const auto got = static_cast<std::size_t>(in.gcount());
+  if (in.eof()) {  // the last line, without a line break
+    line.resize(got);
+    return got > 0 ? LineRead::Line : LineRead::End;
+  }
+  if (in.fail()) {
+    line.clear();
+    return LineRead::TooLong;
+  }
+  line.resize(got - 1);  // without the '\n'
+  return LineRead::Line;
+}
+
 }  // namespace vesica

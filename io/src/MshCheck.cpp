@@ -7,6 +7,7 @@
 #include <string>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace vesica::io::detail {
 namespace {
@@ -46,8 +47,10 @@ void check_msh_file(const std::filesystem::path& path) {
       std::max(kMinTagBound, kTagsPerByte * static_cast<double>(std::filesystem::file_size(path)));
   std::string line;
   bool format_next = false, have_format = false;
-  for (long number = 1; std::getline(in, line); ++number) {
-    if (line.size() > kMaxLineBytes)
+  for (long number = 1;; ++number) {
+    const LineRead r = read_line(in, line, kMaxLineBytes);
+    if (r == LineRead::End) break;
+    if (r == LineRead::TooLong)
       fail(file, "line " + std::to_string(number) + " is longer than 64 KiB");
     if (format_next) {
       check_format_line(line, file);

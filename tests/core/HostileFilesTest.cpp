@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <sstream>
 
 #include "TestData.h"
 #include "vesica/core/AtomicOutput.h"
@@ -159,4 +160,18 @@ TEST(HostileFiles, NumbersThatAreNoUidsStay) {
        {"vesica 0.3.1", "Pdet 12.5 cmH2O at 349.0 ml", "2026.11.24", "192.168.100.200",
         "slice_0001.dcm", "row 12: 1.234,5", "t = 3.14159265358979 s", "file a1.2.3.4.5.6.7.8.9"})
     EXPECT_EQ(vesica::without_uids(text), text);
+}
+
+TEST(HostileFiles, ALineOfAMegabyteIsRecognisedAtItsBound) {
+  std::istringstream in("short\n" + std::string(1 << 20, 'x') + "\nnever read");
+  std::string line;
+  EXPECT_EQ(vesica::read_line(in, line, 1000), vesica::LineRead::Line);
+  EXPECT_EQ(line, "short");
+  EXPECT_EQ(vesica::read_line(in, line, 1000), vesica::LineRead::TooLong);
+  EXPECT_TRUE(line.empty());
+  std::istringstream last("a\nb");  // the last line without a line break
+  EXPECT_EQ(vesica::read_line(last, line, 10), vesica::LineRead::Line);
+  EXPECT_EQ(vesica::read_line(last, line, 10), vesica::LineRead::Line);
+  EXPECT_EQ(line, "b");
+  EXPECT_EQ(vesica::read_line(last, line, 10), vesica::LineRead::End);
 }

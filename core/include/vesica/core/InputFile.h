@@ -7,6 +7,7 @@
 // cannot slip a pipe past it.
 #include <cstdint>
 #include <filesystem>
+#include <istream>
 #include <string>
 
 namespace vesica {
@@ -31,5 +32,12 @@ bool is_special_file(const std::filesystem::path& path);
 // The whole file as bytes, after require_input_file.
 std::string read_input_file(const std::filesystem::path& path, std::uintmax_t max_bytes,
                             const std::string& what = "input");
+
+// One line of `in` into `line` (without its '\n'), never holding more than max_bytes + 1
+// bytes of it: a line of gigabytes (a binary file, a file of one line) is recognised
+// before memory is spent on it. Line: `line` holds it; End: the stream ended before any
+// byte; TooLong: the line is longer than max_bytes (the stream is left failed).
+enum class LineRead { Line, End, TooLong };
+LineRead read_line(std::istream& in, std::string& line, std::size_t max_bytes);
 
 }  // namespace vesica
