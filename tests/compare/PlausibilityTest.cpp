@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "CompareTestSupport.h"
+#include "EditedRecording.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
@@ -125,23 +126,11 @@ TEST(Plausibility, AWarningIsCarriedIntoTheReportAndItsMetrics) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   // The shared recording with its voided column 1.3 times larger, as a file.
-  std::ifstream in(compare_data("normal-female-34y.csv"));
-  std::ofstream out(dir / "more-voided.csv");
-  bool header = false;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || !header) {
-      header = header || (!line.empty() && line[0] != '#');
-      out << line << "\n";
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    cells[6] = std::to_string(1.3 * std::stod(cells[6]));  // voided_ml
-    for (std::size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << cells[k];
-    out << "\n";
-  }
-  out.close();
+  vesica::test::write_edited_recording(
+      compare_data("normal-female-34y.csv"), dir / "more-voided.csv",
+      [](std::vector<std::string>& cells) {
+        cells[6] = std::to_string(1.3 * std::stod(cells[6]));  // voided_ml
+      });
   const auto r = vesica::test::run_command(vesica::test::compare_exe() + " --measured '" +
                                            (dir / "more-voided.csv").string() + "' -o '" +
                                            (dir / "report").string() + "' --no-pdf");

@@ -7,11 +7,13 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "EditedRecording.h"
 #include "HostileSupport.h"
 
 namespace fs = std::filesystem;
@@ -69,27 +71,11 @@ std::vector<std::uint8_t> ball(int n, std::array<double, 3> centre, double radiu
   return v;
 }
 
-// The recording's data rows with `edit` applied to each row's cells.
+// The shared recording with `edit` applied to each data row's cells.
 void write_edited_recording(const fs::path& to,
                             const std::function<void(std::vector<std::string>&)>& edit,
                             const std::string& first_line = "") {
-  std::ifstream in(shared_recording());
-  std::ofstream out(to);
-  if (!first_line.empty()) out << first_line << "\n";
-  bool header = false;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#' || !header) {
-      header = header || (!line.empty() && line[0] != '#');
-      out << line << "\n";
-      continue;
-    }
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    edit(cells);
-    for (std::size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << cells[k];
-    out << "\n";
-  }
+  vesica::test::write_edited_recording(shared_recording(), to, edit, first_line);
 }
 
 const std::string kBase64 = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";

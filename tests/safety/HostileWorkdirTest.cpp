@@ -47,16 +47,18 @@ TEST(HostileWorkdir, ALockThatIsALinkLeavesItsTargetUntouched) {
   const fs::path file = sphere_pipeline(dir);
   fs::create_directories(dir / "out/.vesica");
   write_file(dir / "notes.txt", "a user's notes");
-  fs::create_symlink(dir / "notes.txt", dir / "out/.vesica/lock");
-  const auto r = run_measured(run_vesica("run '" + file.string() + "'"), 60);
-  EXPECT_REFUSED_IN_ONE_LINE(r, "lock");
-  EXPECT_EQ(read_file(dir / "notes.txt"), "a user's notes");
-  // A second name of the user's file (a hard link) is no lock of vesica's either.
-  fs::remove(dir / "out/.vesica/lock");
-  fs::create_hard_link(dir / "notes.txt", dir / "out/.vesica/lock");
-  const auto h = run_measured(run_vesica("run '" + file.string() + "'"), 60);
-  EXPECT_REFUSED_IN_ONE_LINE(h, "lock");
-  EXPECT_EQ(read_file(dir / "notes.txt"), "a user's notes");
+  // A symbolic link, then a second name of the user's file (a hard link): no lock of
+  // vesica's either.
+  for (const bool hard : {false, true}) {
+    fs::remove(dir / "out/.vesica/lock");
+    if (hard)
+      fs::create_hard_link(dir / "notes.txt", dir / "out/.vesica/lock");
+    else
+      fs::create_symlink(dir / "notes.txt", dir / "out/.vesica/lock");
+    const auto r = run_measured(run_vesica("run '" + file.string() + "'"), 60);
+    EXPECT_REFUSED_IN_ONE_LINE(r, "lock");
+    EXPECT_EQ(read_file(dir / "notes.txt"), "a user's notes") << (hard ? "hard link" : "link");
+  }
 }
 
 TEST(HostileWorkdir, AStateFolderThatIsALinkIsNotWrittenThrough) {

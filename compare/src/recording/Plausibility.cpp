@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include <fmt/format.h>
 
 #include "vesica/core/Error.h"
 
@@ -10,10 +11,7 @@ namespace vesica::compare {
 namespace {
 
 std::string number(double v) {
-  std::ostringstream o;
-  o.precision(4);
-  o << v;
-  return o.str();
+  return fmt::format("{:.4g}", v);
 }
 
 // The q-quantile of |values| (finite ones); 0 without any.
