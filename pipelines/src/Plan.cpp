@@ -49,6 +49,21 @@ std::string loc(const SourcePos& p) {
   return "line " + std::to_string(p.line);
 }
 
+// A path no file system can hold (a name over 255 bytes, a path over 4095): every later
+// look at it (exists, status) would throw ENAMETOOLONG instead of answering, so it is a
+// problem of the pipeline file, reported with its line. Empty when it fits.
+std::string unholdable(const fs::path& p) {
+  constexpr std::size_t kMaxName = 255, kMaxPath = 4095;
+  if (p.native().size() > kMaxPath)
+    return "a path of " + std::to_string(p.native().size()) + " characters (at most " +
+           std::to_string(kMaxPath) + ")";
+  for (const fs::path& part : p)
+    if (part.native().size() > kMaxName)
+      return "a name of " + std::to_string(part.native().size()) + " characters (at most " +
+             std::to_string(kMaxName) + ")";
+  return "";
+}
+
 // The file's stages resolved to workdir-relative paths, before any study expansion.
 // A file a stage writes besides its output, report and manifest: a side output its tool
 // declares (bladder.vtu beside bladder.msh) or a parameter naming a file (export_feb).
@@ -83,7 +98,9 @@ class Planner {
                         : fs::absolute(options.workdir_override).lexically_normal();
     for (const auto& e : spec.externals) {
       const fs::path abs = (base / e.path).lexically_normal();
-      if (!fs::exists(abs))
+      if (const std::string why = unholdable(abs); !why.empty())
+        d_.add(e.pos, "external input '" + e.name + "' is " + why);
+      else if (!fs::exists(abs))
         d_.add(e.pos, "external input '" + e.name + "' not found: " + abs.string());
       else if (is_special_file(abs))
         d_.add(e.pos, "external input '" + e.name + "' is a named pipe, device or socket, " +
@@ -222,6 +239,10 @@ class Planner {
                       b.output + "': a stage would replace what it reads");
       return -1;
     }
+    if (const std::string why = unholdable(plan_.workdir / path); !why.empty()) {
+      d_.add(pos, "input of stage '" + b.spec->name + "' is " + why);
+      return -1;
+    }
     if (producer >= 0) {
       if (std::count(b.deps.begin(), b.deps.end(), producer) == 0)
         b.deps.push_back(static_cast<std::size_t>(producer));
@@ -308,6 +329,10 @@ class Planner {
     for (const auto& b : base_) {
       if (b.output.empty()) continue;
       for (const auto& w : written_by(b)) {
+        if (const std::string why = unholdable(plan_.workdir / w.path); !why.empty()) {
+          d_.add(w.pos, "output of stage '" + w.stage->name + "' is " + why);
+          continue;
+        }
         const std::string what = replaces_what(w.path);
         if (!what.empty())
           d_.add(w.pos, "output '" + w.path + "' of stage '" + w.stage->name + "' " + what +
