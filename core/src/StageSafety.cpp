@@ -3,6 +3,8 @@
 #include <csignal>
 #include <filesystem>
 
+#include <CLI/CLI.hpp>
+
 #include "vesica/core/Error.h"
 #include "vesica/core/InputFile.h"
 #include "vesica/core/OutputGuard.h"
