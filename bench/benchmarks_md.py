@@ -271,6 +271,19 @@ def build_make_test(d):
 def build_incremental(d):
     inc = d.get("incremental_test_simulate") or {}
     return (inc.get("touched", ""), inc.get("wall_s"), 60, cpu_and_load(inc))
+def safety(d):
+    cases = d.get("refusals") or []
+    slowest = max((c.get("seconds") or 0 for c in cases), default=None)
+    peak = max((c.get("peak_rss_mb") or 0 for c in cases), default=None)
+    long = d.get("long_recording") or {}
+    stop = d.get("stop") or {}
+    return (f"{len(cases)} hostile inputs, up to 100 MB", slowest, 5,
+            join(f"largest peak RSS {num(peak)} MB",
+                 f"every refusal one line within 5 s and 1 GB: {num(d.get('within_limits'))}",
+                 f"{num(long.get('rows'))}-row recording accepted in {seconds(long.get('seconds'))}, "
+                 f"{num(long.get('peak_rss_mb'))} MB, page {num(long.get('page_mb'))} MB",
+                 f"SIGTERM on a {num(stop.get('triangles'))}-triangle wall: stopped after "
+                 f"{seconds(stop.get('exit_after_s'))}, checkpoint {num(stop.get('checkpoint'))}"))
 
 
 CASES = [
@@ -299,6 +312,7 @@ CASES = [
     ("pipelines", None, "vesica run: no-op of a fresh 6-stage chain", pipelines_noop, True),
     ("pipelines", "demo", "vesica run: no-op of the finished demo", pipelines_demo, False),
     ("study", None, "vesica run: neobladder what-if study from nothing", study, True),
+    ("safety", None, "safety: hostile inputs refused (slowest refusal)", safety, True),
 ]
 for _triangles in (2312, 9800, 39200):
     CASES.append(("verification", pressure_steps_of(_triangles),

@@ -99,6 +99,7 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
     j[c.key + "_class"] = c.verdict;
   }
   j["artefact_rows"] = a->flags.size();
+  j["plausibility_warnings"] = a->warnings.size();
   if (!comparison.is_null()) j["pdet_rmse_cmh2o"] = comparison["filling_pdet"]["rmse_cmh2o"];
   if (cal) {
     for (const auto& fp : cal->parameters) j["fitted_" + fp.name] = fp.value;
@@ -174,8 +175,11 @@ RecordingAnalysis analyse_measured(const CompareOptions& o) {
   io::ReaderOptions reader;
   reader.columns = io::parse_column_map(o.columns);
   reader.pressure_unit = o.pressure_unit;
-  return analyse(io::read_recording(o.measured, reader), o.artefacts,
-                 RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
+  RecordingAnalysis a = analyse_checked(io::read_recording(o.measured, reader), o.artefacts,
+                                        RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
+  for (const auto& w : a.warnings)
+    log()->warn("{}: {} (plausibility rule {})", o.measured, w.message, w.rule);
+  return a;
 }
 
 ComparisonOptions comparison_options(const CompareOptions& o) {

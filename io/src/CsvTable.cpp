@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace vesica::io {
 namespace {
@@ -21,22 +22,14 @@ bool all_empty(const std::vector<std::string>& cells) {
 
 // One line into `text`, at most `max_bytes` of it: false at the end of the file. A longer
 // line is an error before it is held in memory (a single 5 MB cell, a binary file).
-bool next_line(std::istream& in, std::vector<char>& buffer, std::size_t max_bytes, int line,
-               const std::string& file, std::string& text) {
-  if (!in.good()) return false;
-  buffer.resize(max_bytes + 2);  // room for one byte too many, and the terminator
-  in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-  const auto got = static_cast<std::size_t>(in.gcount());
-  if (in.eof()) {  // the last line, without a line break
-    text.assign(buffer.data(), got);
-    return got > 0;
-  }
-  if (in.fail())
+bool next_line(std::istream& in, std::size_t max_bytes, int line, const std::string& file,
+               std::string& text) {
+  const LineRead r = read_line(in, text, max_bytes);
+  if (r == LineRead::TooLong)
     fail(file,
          "line " + std::to_string(line) + " is longer than " + std::to_string(max_bytes) + " bytes",
          "not a CSV recording, or a cell holds far more than a value");
-  text.assign(buffer.data(), got - 1);  // without the '\n'
-  return true;
+  return r == LineRead::Line;
 }
 
 }  // namespace
@@ -91,14 +84,14 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
                    const std::function<void(const CsvHeader&)>& on_header,
                    const std::function<void(const std::vector<std::string>&, int)>& on_row) {
   const std::string file = csv.string();
+  require_input_file(csv, kMaxTableFileBytes, "table");  // no pipe, no device, bounded
   std::ifstream in(csv, std::ios::binary);
   if (!in) fail(file, "cannot open the table", "check the path");
   CsvHeader header;
   bool have_header = false;
   std::size_t rows = 0;
   std::string text;
-  std::vector<char> buffer;
-  for (int line = 1; next_line(in, buffer, options.max_line_bytes, line, file, text); ++line) {
+  for (int line = 1; next_line(in, options.max_line_bytes, line, file, text); ++line) {
     if (line == 1) skip_byte_order_mark(text);
     const std::string t = trim(text);
     if (t.empty() || t[0] == '#') continue;
@@ -121,6 +114,24 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
   }
   if (in.bad()) fail(file, "could not be read to the end");
   if (!have_header) fail(file, "no header row", "the first non-comment line names the columns");
+}
+
+std::vector<std::string> read_leading_comments(const std::filesystem::path& csv,
+                                               std::size_t max_lines) {
+  const std::string file = csv.string();
+  require_input_file(csv, kMaxTableFileBytes, "table");
+  std::ifstream in(csv, std::ios::binary);
+  std::vector<std::string> comments;
+  std::string text;
+  for (int line = 1;
+       comments.size() < max_lines && next_line(in, kMaxCsvLineBytes, line, file, text); ++line) {
+    if (line == 1) skip_byte_order_mark(text);
+    const std::string t = trim(text);
+    if (t.empty()) continue;
+    if (t[0] != '#') break;  // the column header: the comments are over
+    comments.push_back(t.substr(1));
+  }
+  return comments;
 }
 
 CsvTable read_csv_table(const std::filesystem::path& csv, const CsvOptions& options) {

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <set>
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/JsonFile.h"
 #include "vesica/core/Log.h"
 #include "vesica/pipelines/CapacityStress.h"
 #include "vesica/pipelines/StudyPage.h"
@@ -79,8 +79,11 @@ void read_capacity_stress(const PlannedStage& simulate, StudyRow& row) {
 }
 
 void read_outputs(StudyRow& row) {
-  std::ifstream in(row.simulation / "summary.json");
-  if (in) row.summary = nlohmann::json::parse(in, nullptr, false);
+  try {
+    row.summary = read_json_file(row.simulation / "summary.json").value_or(nullptr);
+  } catch (const Error& e) {
+    row.failure = e.what();
+  }
   if (row.summary.is_discarded()) row.summary = nullptr;
   if (!fs::exists(row.simulation / "history.csv")) return;
   row.history_csv = row.simulation / "history.csv";

@@ -22,6 +22,7 @@
 #include "HistoryCsv.h"
 #include "ShellCommand.h"
 #include "TestData.h"
+#include "vesica/simulate/protocol/CheckpointFile.h"
 #include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/wall/SphereMesh.h"
 
@@ -174,6 +175,32 @@ TEST(Resume, AKilledRunExitsWithTheSignalsStatusAndResumesOnTheCommandLine) {
   }
   EXPECT_GT(frames, 2);
   EXPECT_FALSE(fs::exists(cli.checkpoint("resumed"))) << "a finished run keeps its checkpoint";
+}
+
+TEST(Resume, AStopInTheMiddleOfAStepCheckpointsTheLastCompletedStep) {
+  // The process stops itself at its 40th Newton iteration, inside a filling step: the run
+  // stops there (not at the end of the step), its checkpoint is the step before, and the
+  // run resumed from it is the run never stopped (issue 37: a batch scheduler's SIGTERM).
+  CliRuns cli("resume-mid-step");
+  ASSERT_EQ(cli.simulate("whole", "").exit_code, 0);
+  const CommandResult stopped = run_command(
+      "VESICA_SIMULATE_STOP_AFTER_ITERATIONS=40 timeout 120 " + cli.bin + "/vesica-simulate " +
+      cli.mesh + " -o " + (cli.dir / "resumed").string() + " --capacity-ml 200 --no-series 2>&1");
+  EXPECT_EQ(stopped.exit_code, 128 + 15) << stopped.output;
+  EXPECT_NE(stopped.output.find("interrupted by SIGTERM; checkpoint at t = "), std::string::npos)
+      << stopped.output;
+  ASSERT_TRUE(fs::exists(cli.checkpoint("resumed"))) << stopped.output;
+  // The checkpoint's time is a row of the uninterrupted history: a completed step.
+  const auto identity = vesica::simulate::read_checkpoint(cli.checkpoint("resumed")).identity;
+  const double t = identity["time_s"].get<double>();
+  const auto whole = read_history(cli.dir / "whole" / "history.csv");
+  EXPECT_TRUE(std::any_of(whole.begin(), whole.end(),
+                          [&](const HistoryCsvRow& r) { return same(r.t, t); }))
+      << "t = " << t;
+  const CommandResult resumed = cli.simulate("resumed", "--resume");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_EQ(file_text(cli.dir / "whole" / "history.csv"),
+            file_text(cli.dir / "resumed" / "history.csv"));
 }
 
 TEST(Resume, ACorruptCheckpointIsRefusedWithOneLineAndTheEarlierOutputKept) {

@@ -1,9 +1,10 @@
 #pragma once
 // When a running cystometry writes its checkpoint (docs/simulate.md, "Checkpoint and
-// resume"): every RunOptions::Checkpoints::interval_min minutes of compute, and at the end
-// of the step during which SIGTERM or SIGINT arrived, after which the run stops with the
-// signal's conventional status (128 + signal). The handlers only set a flag: the state is
-// consistent only between steps. The file itself is CheckpointFile.h's.
+// resume"): every RunOptions::Checkpoints::interval_min minutes of compute, and when SIGTERM
+// or SIGINT arrives, after which the run stops with the signal's conventional status
+// (128 + signal). The handlers only set a flag (StopRequest.h): the Newton loop abandons
+// the step in progress at its next iteration, and the checkpoint holds the last completed
+// step. The file itself is CheckpointFile.h's.
 //
 // Fault injection, for tests of an interrupted run: when the environment variable
 // VESICA_SIMULATE_STOP_AFTER_STEPS is set to K, the process sends itself SIGTERM after its

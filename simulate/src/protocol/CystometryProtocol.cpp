@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "protocol/Checkpoint.h"
+#include "solver/StopRequest.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/protocol/CystometrySummary.h"
@@ -180,6 +181,7 @@ void CystometryProtocol::step_to_volume(double V) {
     }
     failure = r.failure;
   }
+  if (checkpointer_) checkpointer_->stop_if_signalled();  // settling: before any checkpoint
   throw StepFailed("no equilibrium at " + std::to_string(units::ml_from_m3(V)) + " ml (" + failure +
                    ")");
 }
@@ -187,6 +189,8 @@ void CystometryProtocol::step_to_volume(double V) {
 StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
   std::string failure;
   int cut = 0;
+  // The state before this step: a stop during it is checkpointed here, the last step done.
+  const std::optional<CheckpointWriter> before = last_step_state();
   for (;; ++cut, dt *= 0.5) {
     StepRequest step;
     step.dt_s = dt;
@@ -209,6 +213,10 @@ StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
       return r;
     }
     failure = r.failure;
+    if (checkpointer_ && stop_requested()) {  // the model is back where the step began
+      write_checkpoint_of(before);
+      checkpointer_->stop_if_signalled();
+    }
     if (cut == rules_.max_cutbacks) break;
     // While voiding, a step at the shortest cut-back step fails at once.
     if (voiding_ && dt < 2.0 * rules_.min_cut_void_step_s) {

@@ -20,8 +20,8 @@ void add_verification_entries(SimulateSettings& s, ParameterTable& t) {
            NumberRange::greater_than(0).at_most(1000), "pressure-steps: the last pressure");
   t.number("max_stretch", v.max_stretch, "-", NumberRange::greater_than(1).at_most(10),
            "volume-steps: the last stretch (V/V0)^(1/3)");
-  t.text("export_feb", s.export_feb, "FILE.feb",
-         "also write the wall problem as an FEBio 4 input (README, FEBio)");
+  t.output_file("export_feb", s.export_feb, "FILE.feb",
+                "also write the wall problem as an FEBio 4 input (README, FEBio)");
 }
 
 }  // namespace vesica::simulate
