@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <vector>
 
 #include "vesica/core/Error.h"
 #include "vesica/core/InputFile.h"
@@ -30,6 +31,31 @@ bool next_line(std::istream& in, std::size_t max_bytes, int line, const std::str
          "line " + std::to_string(line) + " is longer than " + std::to_string(max_bytes) + " bytes",
          "not a CSV recording, or a cell holds far more than a value");
   return r == LineRead::Line;
+}
+
+// The lines that may be data rows (not blank, not a comment, not separators alone), the
+// header included, counted over raw bytes and stopping once past `limit`: a table of too
+// many rows is refused in a fraction of the time that parsing them would take.
+std::size_t candidate_rows_up_to(std::istream& in, std::size_t limit) {
+  std::vector<char> buffer(std::size_t{1} << 20);
+  std::size_t count = 0;
+  bool at_start = true, comment = false, content = false;
+  while (count <= limit && in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto n = static_cast<std::size_t>(in.gcount());
+    for (std::size_t i = 0; i < n; ++i) {
+      const char c = buffer[i];
+      if (c == '\n') {
+        count += content && !comment;
+        at_start = true, comment = false, content = false;
+      } else if (c != ' ' && c != '\t' && c != '\r') {
+        if (at_start) comment = c == '#';
+        at_start = false;
+        content = content || (c != ',' && c != ';' && c != '"');
+      }
+    }
+  }
+  return count + (content && !comment);
 }
 
 }  // namespace
@@ -87,6 +113,11 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
   require_input_file(csv, kMaxTableFileBytes, "table");  // no pipe, no device, bounded
   std::ifstream in(csv, std::ios::binary);
   if (!in) fail(file, "cannot open the table", "check the path");
+  if (candidate_rows_up_to(in, options.max_rows + 1) > options.max_rows + 1)
+    fail(file, "more than " + std::to_string(options.max_rows) + " data rows",
+         "downsample the recording (vesica reads at most that many rows)");
+  in.clear();
+  in.seekg(0);
   CsvHeader header;
   bool have_header = false;
   std::size_t rows = 0;
