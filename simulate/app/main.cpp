@@ -30,45 +30,6 @@ using namespace vesica::simulate;
 
 namespace {
 
-bool given(double value) {
-  return value != kMaterialDefault;
-}
-
-// The material as the library takes it (SI) from the table's clinical units: only the
-// parameters given, the rest is the named material's own (MaterialRegistry.h).
-MaterialSpec material_spec(const SimulateSettings& c) {
-  MaterialSpec spec{c.material, {}};
-  auto set = [&spec](const char* key, double value) {
-    if (given(value)) spec.params[key] = value;
-  };
-  auto set_kpa = [&spec](const char* key, double kpa) {
-    if (given(kpa)) spec.params[key] = units::pa_from_kpa(kpa);
-  };
-  set_kpa("mu", c.mu_kpa);
-  set_kpa("K", c.k_kpa);
-  const bool fibers = c.material != "neo-hookean" && c.material != "maxwell";
-  if (!fibers && (given(c.k1_kpa) || given(c.k2)))
-    usage_error("--k1-kpa/--k2 need a material with fibers (bladder, neobladder, fibers)");
-  set_kpa("k1", c.k1_kpa);
-  set("k2", c.k2);
-  spec.params["beta_vol"] = c.beta_vol;  // 9, or 0: K/2 (ln J)² (docs/physics.md §2.3)
-  if (c.beta.size() != c.tau_s.size())
-    usage_error("--beta and --tau-s need the same number of values");
-  if (!c.beta.empty() && c.material == "neo-hookean")
-    usage_error("--beta/--tau-s need a viscoelastic material (not neo-hookean)");
-  for (std::size_t a = 0; a < c.beta.size(); ++a) {
-    spec.params["beta" + std::to_string(a + 1)] = c.beta[a];
-    spec.params["tau" + std::to_string(a + 1)] = c.tau_s[a];
-  }
-  set_kpa("tone", c.tone_kpa);
-  set_kpa("contractility", c.detrusor_kpa);
-  set("optimal_stretch", c.optimal_stretch);
-  set("stretch_width", c.stretch_width);
-  set("hill_a", c.hill_a);
-  set("hill_vmax", c.hill_vmax_per_s);
-  return spec;
-}
-
 // What a checkpoint of this run is computed from (docs/simulate.md, "Checkpoint and
 // resume"): the mesh's content, the parameters (those that change results: not the
 // checkpoint interval) and the command line without --resume, which the runner compares.
@@ -111,7 +72,7 @@ int main(int argc, char** argv) {
     options.reference = c.wall.reference;
     options.output_dir = output;
     validate(p, options);  // before reading anything
-    const MaterialSpec spec = material_spec(c);
+    const MaterialSpec spec = material_spec(c.material);
     make_material(spec);                    // reject bad parameters before reading anything
     if (is_verification(c.verification)) {  // issue 25: P–λ of a closed wall
       record.parameters() = table.values();
