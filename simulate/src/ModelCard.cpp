@@ -31,6 +31,7 @@ RunNumerics numerics_of(const RunOptions& o) {
   n.void_dt_max_s = o.level2.void_dt_max_s;
   n.urine_viscosity_pa_s = o.level2.urine_viscosity;
   n.linear_solver = o.level2.linear_solver;
+  n.remesh_radius_ratio = o.level2.remesh_radius_ratio;
   return n;
 }
 
@@ -48,6 +49,7 @@ void apply_numerics(const RunNumerics& n, RunOptions& o) {
   o.level2.void_dt_max_s = n.void_dt_max_s;
   o.level2.urine_viscosity = n.urine_viscosity_pa_s;
   o.level2.linear_solver = n.linear_solver;
+  o.level2.remesh_radius_ratio = n.remesh_radius_ratio;
 }
 
 const char* drive_name(VoidingDrive drive) {

@@ -293,7 +293,8 @@ json numerics_json(const RunNumerics& n) {
             {"void_dt_min_s", n.void_dt_min_s},
             {"void_dt_max_s", n.void_dt_max_s},
             {"urine_viscosity_pa_s", n.urine_viscosity_pa_s},
-            {"linear_solver", word_of(n.linear_solver, kSolvers)}}}};
+            {"linear_solver", word_of(n.linear_solver, kSolvers)},
+            {"remesh_radius_ratio", n.remesh_radius_ratio}}}};
 }
 
 void numerics_from(const Reader& r, RunNumerics& n) {
@@ -310,6 +311,7 @@ void numerics_from(const Reader& r, RunNumerics& n) {
   n.void_dt_max_s = l2.number("void_dt_max_s");
   n.urine_viscosity_pa_s = l2.number("urine_viscosity_pa_s");
   n.linear_solver = l2.word("linear_solver", kSolvers);
+  n.remesh_radius_ratio = l2.number("remesh_radius_ratio");
 }
 
 json mesh_json(const MeshIdentity& m) {

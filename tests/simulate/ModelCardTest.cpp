@@ -86,6 +86,7 @@ ModelCard unusual_card() {
   n.void_dt_max_s = 0.3;
   n.urine_viscosity_pa_s = 1.2e-3;
   n.linear_solver = Level2LinearSolver::Direct;
+  n.remesh_radius_ratio = 0.2;
   c.hand_overs = {{2, 1, 18.5, 140.25, "inverted tetrahedron"},
                   {1, 0, 6.0, 150.5, "no convergence"}};
   c.mesh = {"bladder.vtu", "sha256:0123abcd", 2474, 1239, 9001, 6.5};
@@ -161,6 +162,7 @@ void expect_same(const ModelCard& a, const ModelCard& b) {
   EXPECT_EQ(m.void_dt_max_s, n.void_dt_max_s);
   EXPECT_EQ(m.urine_viscosity_pa_s, n.urine_viscosity_pa_s);
   EXPECT_EQ(m.linear_solver, n.linear_solver);
+  EXPECT_EQ(m.remesh_radius_ratio, n.remesh_radius_ratio);
   ASSERT_EQ(a.hand_overs.size(), b.hand_overs.size());
   for (std::size_t i = 0; i < a.hand_overs.size(); ++i) {
     EXPECT_EQ(a.hand_overs[i].from, b.hand_overs[i].from);

@@ -67,6 +67,7 @@ struct RunNumerics {
   double void_dt_max_s = 0.0;
   double urine_viscosity_pa_s = 0.0;
   Level2LinearSolver linear_solver = Level2LinearSolver::Krylov;
+  double remesh_radius_ratio = 0.0;
 };
 
 // A hand-over between levels of the model (docs/simulate.md, "Levels and their
@@ -87,7 +88,7 @@ struct MeshIdentity {
   std::string hash;  // "sha256:..." of the file's bytes (empty: none)
   long triangles = 0;
   long nodes = 0;
-  long tetrahedra = 0;  // the urine's, level 2 only
+  long tetrahedra = 0;        // the urine's, level 2 only
   double mean_edge_mm = 0.0;  // of the stress-free wall as it ran
 };
 
