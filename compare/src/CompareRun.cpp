@@ -19,6 +19,7 @@
 #include "vesica/core/Log.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/io/RecordingReader.h"
+#include "vesica/simulate/ModelCardJson.h"
 
 namespace vesica::compare {
 namespace {
@@ -125,6 +126,8 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
                   StageRecord& record) {
   const fs::path out(o.output);
   const bool picture = in.wall_stress && !in.wall_stress->png.empty();
+  // The fitted model, for `vesica-simulate --model-card model.json`.
+  const auto& fitted_card = in.calibration ? in.calibration->fitted_card : std::nullopt;
   // One folder, replaced whole: never a new metrics.json beside an old index.html or PDF.
   write_atomically(out, [&](const fs::path& tmp) {
     if (picture) {
@@ -133,6 +136,8 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
                             picture_facts(*in.wall_stress).dump(2) + "\n");
     }
     write_text_atomically(tmp / "index.html", report_html(in));
+    if (fitted_card)
+      write_text_atomically(tmp / "model.json", simulate::model_card_text(*fitted_card));
     if (o.no_pdf) {
       metrics["pdf"] = {{"written", false}, {"why", "--no-pdf"}};
     } else {
@@ -147,6 +152,7 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
     record.add_output(out / "wall-stress.json");
   }
   record.add_output(out / "index.html");
+  if (fitted_card) record.add_output(out / "model.json");
   if (metrics["pdf"]["written"].get<bool>()) record.add_output(out / "report.pdf");
   record.add_output(out / "metrics.json");
 }

@@ -15,6 +15,7 @@ namespace vesica::simulate {
 namespace {
 
 constexpr std::size_t kMaxBranches = 5;  // Maxwell branches a material takes (docs/physics.md §2)
+const NumberRange kVolume = NumberRange::greater_than(0).at_most(5000);  // ml
 
 // "a,b,c": up to kMaxBranches numbers, each in `range`.
 std::vector<double> list_from_text(const std::string& text, const NumberRange& range,
@@ -90,9 +91,31 @@ void add_material_entries(MaterialChoice& m, ParameterTable& t) {
   }
 }
 
-void add_catalogue_protocol_entries(ProtocolSettings& protocol, ParameterTable& t) {
+void add_drive_entries(ProtocolSettings& protocol, ParameterTable& t) {
+  t.choice<VoidingDrive>(
+      "drive", protocol.drive,
+      {{"detrusor", VoidingDrive::Detrusor}, {"straining", VoidingDrive::Straining}},
+      "what voids the bladder: the detrusor's contraction or abdominal straining");
   for (const PhysicalParameter& p : parameter_catalogue())
     if (!p.is_material()) t.number(p.key, protocol.*(p.field), p.unit, p.range, p.help);
+}
+
+void add_wall_reference_entries(WallOptions& w, ParameterTable& t) {
+  t.number("thickness_mm", w.thickness_mm, "mm", NumberRange::at_least(0.1).at_most(30),
+           "wall thickness where the mesh gives none");
+  t.number("residual_ml", w.residual_ml, "ml", NumberRange::at_least(1).at_most(5000),
+           "stress-free (residual) volume of the scaled reference");
+}
+
+void add_start_entry(ProtocolSettings& p, ParameterTable& t) {
+  t.number("start_ml", p.start_ml, "ml", kVolume, "volume at the start of filling");
+}
+
+void add_model_entries(SimulateSettings& s, ParameterTable& t) {
+  add_material_entries(s.material, t);
+  add_wall_reference_entries(s.wall, t);
+  add_start_entry(s.protocol, t);
+  add_drive_entries(s.protocol, t);
 }
 
 MaterialSpec material_spec(const MaterialChoice& m) {
@@ -122,15 +145,12 @@ namespace {
 void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
   WallOptions& w = s.wall;
   ProtocolSettings& p = s.protocol;
-  t.number("thickness_mm", w.thickness_mm, "mm", NumberRange::at_least(0.1).at_most(30),
-           "wall thickness where the mesh gives none");
+  add_wall_reference_entries(w, t);
   t.choice<ReferenceState>(
       "reference", w.reference,
       {{"scale", ReferenceState::Scale}, {"prestress", ReferenceState::Prestress}},
       "stress-free reference: the image scaled to residual_ml, or the "
       "image prestressed at image_pressure_cmh2o");
-  t.number("residual_ml", w.residual_ml, "ml", NumberRange::at_least(1).at_most(5000),
-           "stress-free (residual) volume of the scaled reference");
   t.number("image_pressure_cmh2o", p.image_pressure_cmh2o, "cmH2O",
            NumberRange::at_least(0).at_most(200),
            "pressure of the imaged bladder (reference prestress)");
@@ -156,9 +176,8 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
 }
 
 void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
-  const NumberRange volume = NumberRange::greater_than(0).at_most(5000);
-  t.number("start_ml", p.start_ml, "ml", volume, "volume at the start of filling");
-  t.number("capacity_ml", p.capacity_ml, "ml", volume, "cystometric capacity (end of filling)");
+  add_start_entry(p, t);
+  t.number("capacity_ml", p.capacity_ml, "ml", kVolume, "cystometric capacity (end of filling)");
   t.number("fill_rate_ml_min", p.fill_rate_ml_min, "ml/min",
            NumberRange::at_least(1).at_most(1000).because(
                "at 0 filling never ends; cystometry fills at 10-100 ml/min"),
@@ -170,11 +189,7 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
   t.number("pabd_cmh2o", p.pabd_cmh2o, "cmH2O", NumberRange::at_least(-20).at_most(200),
            "resting abdominal pressure");
   t.flag_off("no_void", p.void_after_fill, "stop after filling (and hold)");
-  t.choice<VoidingDrive>(
-      "drive", p.drive,
-      {{"detrusor", VoidingDrive::Detrusor}, {"straining", VoidingDrive::Straining}},
-      "what voids the bladder: the detrusor's contraction or abdominal straining");
-  add_catalogue_protocol_entries(p, t);
+  add_drive_entries(p, t);
   t.number("stop_flow_ml_s", p.stop_flow_ml_s, "ml/s", NumberRange::greater_than(0).at_most(50),
            "voiding ends when the flow falls below this");
   t.number("max_void_s", p.max_void_s, "s", NumberRange::greater_than(0).at_most(3600),

@@ -13,6 +13,7 @@ namespace vesica::simulate {
 struct SimulateSettings;
 struct MaterialChoice;
 struct ProtocolSettings;
+struct WallOptions;
 
 ParameterTable parameter_table(SimulateSettings& settings);
 // Bound to default settings of its own (the runner's copy).
@@ -22,8 +23,15 @@ ParameterTable parameter_table();
 // key, unit, range and help; "auto": the named material's own), and the earlier keys
 // still accepted: vesica-compare's table takes the same.
 void add_material_entries(MaterialChoice& material, ParameterTable& table);
-// The urethra's and the voiding drive's entries of the catalogue, bound to `protocol`.
-void add_catalogue_protocol_entries(ProtocolSettings& protocol, ParameterTable& table);
+// The voiding drive and the urethra's and the drive's catalogue entries, bound to `protocol`.
+void add_drive_entries(ProtocolSettings& protocol, ParameterTable& table);
+// The wall's thickness where the mesh gives none and its stress-free (residual) volume.
+void add_wall_reference_entries(WallOptions& wall, ParameterTable& table);
+// The volume filling starts from.
+void add_start_entry(ProtocolSettings& protocol, ParameterTable& table);
+// The model a calibration starts from, as vesica-simulate takes it (vesica-compare's table):
+// the material's entries, the wall's reference, the start volume, the drive and the urethra.
+void add_model_entries(SimulateSettings& settings, ParameterTable& table);
 
 // The material as the library takes it (SI): the parameters given, the rest the named
 // material's own. Throws vesica::Error (usage) for a parameter the named material's law
