@@ -1,6 +1,8 @@
 # vesica: two commands set everything up.
 #   make demo   install missing Debian packages, build (Release), run the demo pipeline
-#   make test   same set-up, then every test through ctest
+#   make test   same set-up, then every test through ctest: all four tiers (unit,
+#               acceptance, fuzz, install) and the assertions they executed
+#   make check  build, then the unit tier only (ctest -L unit): the quick loop before a commit
 #   make bench  same set-up, then the benchmarks (JSON in build/bench/, table in
 #               docs/benchmarks.md)
 #   make install [PREFIX=/usr/local]  build, then install executables, libraries, headers,
@@ -25,8 +27,16 @@ DEBIAN_PACKAGES += zlib1g-dev
 
 # make package: dpkg-shlibdeps computes the Debian package's Depends.
 DEBIAN_PACKAGES += dpkg-dev
+# The compiler cache: a rebuild compiles from the cache what did not change.
+DEBIAN_PACKAGES += ccache
 
-.PHONY: all deps configure build demo test bench install package format clean
+# Extra cmake options for the first configure (e.g. CMAKE_ARGS=-DVESICA_SHARED_DIR=/data).
+CMAKE_ARGS ?=
+# ccache may trust a header's contents rather than its time stamps (its manual,
+# "Sloppiness"): a fresh clone has every file new.
+export CCACHE_SLOPPINESS ?= pch_defines,time_macros,include_file_mtime,include_file_ctime
+
+.PHONY: all deps configure build build-tests demo check test bench install package format clean
 
 all: build
 
@@ -40,8 +50,11 @@ deps:
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing >/dev/null; \
 	fi
 
+# ccache is the compiler launcher when it is installed (deps installs it).
 $(BUILD_DIR)/build.ninja: CMakeLists.txt | deps
-	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+	cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release \
+	  $$(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+	    -DCMAKE_C_COMPILER_LAUNCHER=ccache) $(CMAKE_ARGS) >/dev/null
 
 configure: deps $(BUILD_DIR)/build.ninja
 
@@ -52,8 +65,23 @@ demo: build
 	$(BUILD_DIR)/bin/vesica run pipelines/demo.yaml --workdir $(BUILD_DIR)/demo
 	@echo "Demo outputs in $(BUILD_DIR)/demo; report: $(BUILD_DIR)/demo/report/index.html"
 
-test: build
-	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+# Everything, and the readers built a second time with sanitizers for the fuzz tier (not
+# part of `build`: only the full test run pays for them), in one ninja run.
+build-tests: configure
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target all vesica_fuzz
+
+check: build
+	cd $(BUILD_DIR) && ctest -L '^unit$$' --output-on-failure -j $(JOBS)
+
+# Every tier; at the end, how many assertions the test processes executed
+# (tests/support/AssertionCount.h), the figure that must not fall when tests move.
+test: build-tests
+	@rm -f $(BUILD_DIR)/assertions.log
+	cd $(BUILD_DIR) && VESICA_ASSERTION_LOG=$$PWD/assertions.log \
+	  ctest --output-on-failure -j $(JOBS); rc=$$?; \
+	  cat assertions.log 2>/dev/null | \
+	    awk '{ n += $$1; p++ } END { printf "%d assertions executed by %d test processes\n", n, p }'; \
+	  exit $$rc
 
 # BENCH="segment surface" runs only those benchmarks (bench/bench_NAME.sh); every run
 # rewrites the table of docs/benchmarks.md.

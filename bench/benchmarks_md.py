@@ -231,7 +231,54 @@ def pressure_steps_of(triangles):
     return lambda d: [r for r in d.get("pressure_steps", []) if r.get("triangles") == triangles] or None
 
 
+def cpu_and_load(d):
+    """"CPU 123 s; load 1.2 → 3.4" of one timed step of bench_build.sh."""
+    return join(f"CPU {seconds(d.get('cpu_s'))}",
+                f"load {num(d.get('load_before'))} → {num(d.get('load_after'))}",
+                None if not d.get("exit") else f"exit {d.get('exit')}")
+
+
+def build_clean(d):
+    configure, build = d.get("configure") or {}, d.get("build") or {}
+    wall = (configure.get("wall_s") or 0) + (build.get("wall_s") or 0)
+    return (f"{num(build.get('translation_units'))} translation units", wall, None,
+            join(f"configure {seconds(configure.get('wall_s'))}", cpu_and_load(build),
+                 d.get("compiler_cache")))
+
+
+def build_unit(d):
+    unit = (d.get("ctest") or {}).get("unit") or {}
+    return (f"{num(unit.get('tests'))} entries", unit.get("wall_s"), 120,
+            join(cpu_and_load(unit), f"{num(unit.get('failures'))} failed",
+                 f"{num(unit.get('skipped'))} skipped"))
+
+
+def build_tiers(d):
+    tiers = d.get("ctest") or {}
+    per = ", ".join(f"{name} {seconds(t.get('wall_s'))} (CPU {seconds(t.get('cpu_s'))}, "
+                    f"{num(t.get('tests'))} entries, {num(t.get('failures'))} failed)"
+                    for name, t in tiers.items())
+    return (f"{num(d.get('ctest_entries'))} entries, {num(d.get('gtest_cases'))} GoogleTest cases",
+            d.get("ctest_all_tiers_wall_s"), None,
+            join(per, f"{num(d.get('assertions'))} assertions executed"))
+
+
+def build_make_test(d):
+    return ("configure + build + the four tiers", d.get("configure_build_and_tiers_wall_s"),
+            1200, "the sum of the rows above; apt-get not included")
+
+
+def build_incremental(d):
+    inc = d.get("incremental_test_simulate") or {}
+    return (inc.get("touched", ""), inc.get("wall_s"), 60, cpu_and_load(inc))
+
+
 CASES = [
+    ("build", None, "build: a clean clone configured and built as make test builds it", build_clean, True),
+    ("build", None, "build: ctest -L unit after a build (make check)", build_unit, True),
+    ("build", None, "build: ctest of each tier, one after the other", build_tiers, True),
+    ("build", None, "build: a clean clone to every tier run (make test without apt-get)", build_make_test, True),
+    ("build", None, "build: one simulate/src .cpp changed → test_simulate runnable", build_incremental, True),
     ("segment", "phantom_512x512x300_0p8mm", "segment: read + segment a phantom DICOM series", segment_phantom, True),
     ("segment", "mr_512x512x40_0p7x0p7x3p5mm", "segment: read + segment a T2 MR phantom DICOM series (bias field, noise)", segment_mr, True),
     ("segment", "real_ct_3mm", "segment: segmentation of the real CT", segment_real, True),

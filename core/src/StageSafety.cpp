@@ -3,6 +3,8 @@
 #include <csignal>
 #include <filesystem>
 
+#include <CLI/CLI.hpp>
+
 #include "vesica/core/OutputGuard.h"
 
 namespace vesica {

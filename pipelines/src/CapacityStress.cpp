@@ -1,5 +1,7 @@
 #include "vesica/pipelines/CapacityStress.h"
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Error.h"
 #include "vesica/pipelines/ChildProcess.h"
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Error.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/Plan.h"

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/html/SvgPlot.h"
 #include "vesica/compare/html/Viridis.h"
 

@@ -8,6 +8,8 @@
 #include <map>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "Joined.h"
 #include "vesica/core/Error.h"
 #include "vesica/pipelines/ChildProcess.h"

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"

@@ -21,26 +21,40 @@ depends=$(dpkg-deb -f "$deb" Depends)
 depended=$(sed 's/([^)]*)//g; s/[,|]/ /g' <<<"$depends")  # the package names alone
 dpkg -x "$deb" "$work/root"
 missing=""
-for exe in "$work"/root/usr/bin/*; do
+# Every NEEDED library of every executable, as "exe lib path" lines (path as ldd resolves it).
+needed=$(for exe in "$work"/root/usr/bin/*; do
+  loaded=$(ldd "$exe")
   for lib in $(readelf -d "$exe" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p'); do
-    path=$(ldd "$exe" | awk -v l="$lib" '$1 == l {print $3}')
+    path=$(awk -v l="$lib" '$1 == l {print $3}' <<<"$loaded")
     # The dynamic loader (NEEDED where position-independent code reads thread-locals
     # through __tls_get_addr): ldd shows it by its own path, without "=>".
-    [ -n "$path" ] || path=$(ldd "$exe" | awk -v l="$lib" '$1 ~ "/" l "$" {print $1}')
-    [ -n "$path" ] || { echo "$exe: $lib not found"; exit 1; }
-    owner=$(dpkg -S "$path" 2>/dev/null || dpkg -S "$(readlink -f "$path")" 2>/dev/null ||
-            dpkg -S "${path#/usr}" 2>/dev/null || true)
-    pkg=${owner%%:*}
-    [ -n "$pkg" ] || { echo "$path: no Debian package ships it"; exit 1; }
-    # The package itself or a name it provides (libspdlog1.10 provides libspdlog1.10-fmt9).
-    names=" $pkg $(dpkg-query -W -f='${Provides}' "$pkg" | sed 's/([^)]*)//g; s/,/ /g') "
-    found=no
-    for name in $depended; do
-      [[ "$names" == *" $name "* ]] && found=yes
-    done
-    [ $found = yes ] || missing="$missing $pkg($lib)"
+    [ -n "$path" ] || path=$(awk -v l="$lib" '$1 ~ "/" l "$" {print $1}' <<<"$loaded")
+    echo "$exe $lib ${path:-?}"
   done
-done
+done)
+if grep -q ' ?$' <<<"$needed"; then grep ' ?$' <<<"$needed" | sed 's/ ?$/ not found/'; exit 1; fi
+# Which package ships each library: one dpkg -S for all of them (each call reads the whole
+# package database), under each name the file may be listed by (/lib or /usr/lib, a link).
+declare -A owner_of names_of
+candidates=$(awk '{print $3}' <<<"$needed" | sort -u | while read -r path; do
+  echo "$path"; readlink -f "$path"; echo "${path#/usr}"; done | sort -u)
+while IFS= read -r line; do
+  owner_of[${line#*: }]=${line%%: *}
+done < <(dpkg -S $candidates 2>/dev/null | grep -v '^diversion' || true)
+while read -r exe lib path; do
+  owner=${owner_of[$path]:-${owner_of[$(readlink -f "$path")]:-${owner_of[${path#/usr}]:-}}}
+  pkg=${owner%%[:,]*}
+  [ -n "$pkg" ] || { echo "$path: no Debian package ships it"; exit 1; }
+  # The package itself or a name it provides (libspdlog1.10 provides libspdlog1.10-fmt9).
+  if [ -z "${names_of[$pkg]+set}" ]; then
+    names_of[$pkg]=" $pkg $(dpkg-query -W -f='${Provides}' "$pkg" | sed 's/([^)]*)//g; s/,/ /g') "
+  fi
+  found=no
+  for name in $depended; do
+    [[ "${names_of[$pkg]}" == *" $name "* ]] && found=yes
+  done
+  [ $found = yes ] || missing="$missing $pkg($lib)"
+done <<<"$needed"
 [ -z "$missing" ] || { echo "Depends lacks:$missing"; echo "Depends: $depends"; exit 1; }
 echo "Depends: $(tr ',' '\n' <<<"$depends" | grep -c .) packages, covering every NEEDED library"
 

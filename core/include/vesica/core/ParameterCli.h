@@ -6,9 +6,13 @@
 // A hidden `--parameters-json` prints the table's description and exits 0.
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "vesica/core/ParameterTable.h"
+
+// CLI11's App by reference only: the executables that build one include <CLI/CLI.hpp>
+// themselves, and the libraries including this header do not parse CLI11.
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace vesica {
 

@@ -5,7 +5,11 @@
 //    no message and a temporary left behind;
 //  - the paths given on its command line, other than its outputs, protected from being
 //    replaced by an output (OutputGuard.h).
-#include <CLI/CLI.hpp>
+// CLI11's App by reference only: the executables that build one include <CLI/CLI.hpp>
+// themselves, and the libraries including this header do not parse CLI11.
+namespace CLI {
+class App;
+}  // namespace CLI
 
 namespace vesica {
 

@@ -4,7 +4,7 @@
 #include <array>
 
 #include <Eigen/Core>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/mesh/VolumeMesh.h"
 

@@ -4,7 +4,7 @@
 // and `vesica parameters` prints it, so the docs cannot drift from the code's defaults.
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace vesica::pipelines {
 

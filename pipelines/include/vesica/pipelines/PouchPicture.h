@@ -6,7 +6,7 @@
 // that sizes compare as well as shapes.
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 namespace vesica::pipelines {
 
