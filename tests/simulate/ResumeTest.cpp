@@ -321,17 +321,24 @@ struct LevelTwoRuns {
     wall = load_wall(dir / "sphere.vtu", WallOptions{});
     urine = read_urine(dir / "sphere.vtu");
   }
-  RunOptions options(const std::string& checkpoint = "") const {
+  static RunOptions options() {
     RunOptions o;
     o.level = 2;
-    if (!checkpoint.empty()) {
-      o.checkpoints.file = dir / checkpoint / "checkpoint.bin";
-      o.checkpoints.identity = R"({"inputs": "sphere"})";
-    }
     return o;
   }
   CystometryResult run(const RunOptions& o) const {
     return run_cystometry(wall, material, protocol, o, &urine);
+  }
+  // The run of `o` stopped by SIGTERM after `steps` steps (its checkpoint in `folder`),
+  // then resumed from its checkpoint.
+  CystometryResult stopped_and_resumed(RunOptions o, const std::string& folder, int steps) const {
+    o.checkpoints.file = dir / folder / "checkpoint.bin";
+    o.checkpoints.identity = R"({"inputs": "sphere"})";
+    stop_after_steps(o, steps);
+    EXPECT_THROW(run(o), RunInterrupted);
+    o.on_progress = nullptr;
+    o.checkpoints.resume = true;
+    return run(o);
   }
 };
 
@@ -341,12 +348,7 @@ TEST(Resume, ALevelTwoSimulationKilledMidFillingResumesToTheSameHistory) {
   const LevelTwoRuns runs("resume-level2");
   const CystometryResult whole = runs.run(runs.options());
   ASSERT_TRUE(whole.completed) << whole.failure;
-  RunOptions o = runs.options("stopped");
-  stop_after_steps(o, 20);
-  EXPECT_THROW(runs.run(o), RunInterrupted);
-  o.on_progress = nullptr;
-  o.checkpoints.resume = true;
-  const CystometryResult resumed = runs.run(o);
+  const CystometryResult resumed = runs.stopped_and_resumed(runs.options(), "stopped", 20);
   ASSERT_TRUE(resumed.completed) << resumed.failure;
   expect_same_rows(whole.history, resumed.history);
   expect_same_summary(whole.summary, resumed.summary);
@@ -369,13 +371,7 @@ TEST(Resume, ALevelTwoSimulationResumedAfterARemeshEndsTheSame) {
   // before the row it is stopped at.
   const CystometryResult unremeshed = runs.run(runs.options());
   EXPECT_LE(first_different_row(whole.history, unremeshed.history), 20u);
-  RunOptions o = runs.options("stopped");
-  o.level2.remesh_radius_ratio = early.level2.remesh_radius_ratio;
-  stop_after_steps(o, 20);
-  EXPECT_THROW(runs.run(o), RunInterrupted);
-  o.on_progress = nullptr;
-  o.checkpoints.resume = true;
-  const CystometryResult resumed = runs.run(o);
+  const CystometryResult resumed = runs.stopped_and_resumed(early, "stopped", 20);
   ASSERT_TRUE(resumed.completed) << resumed.failure;
   expect_same_rows(whole.history, resumed.history);
   expect_same_summary(whole.summary, resumed.summary);
