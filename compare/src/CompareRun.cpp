@@ -7,6 +7,8 @@
 #include <memory>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/analysis/ModelComparison.h"
 #include "vesica/compare/analysis/WallStress.h"

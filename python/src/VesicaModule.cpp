@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/CompareRun.h"
 #include "vesica/compare/analysis/IcsParameters.h"

@@ -4,6 +4,8 @@
 // (the coarse sphere surrogate, then the wall) and on the wall alone.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/calibration/Calibration.h"
 #include "vesica/simulate/wall/SphereMesh.h"

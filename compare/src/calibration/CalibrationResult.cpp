@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/simulate/ModelCardJson.h"
 
 namespace vesica::compare {

@@ -3,6 +3,8 @@
 // helpers they share.
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/report/ReportPage.h"
 
 namespace vesica::compare::report {

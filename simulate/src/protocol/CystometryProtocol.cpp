@@ -7,6 +7,8 @@
 #include <sstream>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "protocol/Checkpoint.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/IcsParameters.h"
 #include "vesica/compare/analysis/VoidingAgreement.h"

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/analysis/SexSpecificCriteria.h"
