@@ -20,7 +20,7 @@ DEBIAN_PACKAGES := cmake ninja-build g++ pkg-config \
   libinsighttoolkit5-dev libgdcm-dev libvtk9-dev libcgal-dev libgmsh-dev \
   libeigen3-dev libsuitesparse-dev libmumps-seq-dev libopenblas0-pthread libassimp-dev libyaml-cpp-dev nlohmann-json3-dev \
   libcli11-dev libfmt-dev libspdlog-dev libssl-dev libgtest-dev libbenchmark-dev \
-  xvfb xauth chromium snakemake python3-meshio \
+  xvfb xauth chromium snakemake python3-meshio libjs-three \
   python3-dev python3-pybind11 pybind11-dev python3-numpy python3-pytest
 # zlib: core reads every gzip output back before it replaces anything
 DEBIAN_PACKAGES += zlib1g-dev

@@ -62,8 +62,10 @@ set(CPACK_DEBIAN_RUNTIME_FILE_NAME DEB-DEFAULT)
 # The Depends line of the executables' shared libraries, computed by dpkg-shlibdeps.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
 # Not linked, but called: xvfb-run draws the report's wall-stress picture without a
-# display; Snakemake runs `vesica export --snakemake` workflows on a cluster.
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "xvfb, xauth")
+# display; headless Chromium prints the report to report.pdf; three.js (libjs-three) is
+# inlined into the report for its interactive wall; Snakemake runs
+# `vesica export --snakemake` workflows on a cluster.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "xvfb, xauth, chromium, libjs-three")
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "snakemake")
 
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME vesica-dev)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -13,9 +14,11 @@
 #include "vesica/compare/analysis/ModelComparison.h"
 #include "vesica/compare/analysis/WallStress.h"
 #include "vesica/compare/calibration/CalibrationRun.h"
+#include "vesica/compare/recording/FillingTimes.h"
 #include "vesica/compare/recording/RecordingHeader.h"
 #include "vesica/compare/report/PdfPrint.h"
 #include "vesica/compare/report/ReportPage.h"
+#include "vesica/compare/report/WallViewer.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
@@ -57,6 +60,20 @@ std::optional<WallStressPicture> capacity_picture(const CompareOptions& o,
     if (!from_series.png.empty() || !picture) return from_series;
   }
   return picture;
+}
+
+// The interactive wall over filling and voiding, from series.pvd beside history.csv;
+// three.js from VESICA_THREE_JS_DIR (the environment, else Debian's libjs-three).
+std::optional<WallViewer> wall_viewer(const CompareOptions& o, const RecordingAnalysis* sim) {
+  if (!sim || !sim->recording.has_time()) return std::nullopt;
+  const fs::path pvd = fs::path(o.simulated).parent_path() / "series.pvd";
+  return load_wall_viewer(pvd, sim->recording.time_s[sim->ics.capacity_row],
+                          filling_times(sim->recording, sim->ics).start_s);
+}
+
+fs::path three_js_dir() {
+  const char* dir = std::getenv("VESICA_THREE_JS_DIR");
+  return dir && *dir ? fs::path(dir) : fs::path(VESICA_THREE_JS_DIR);
 }
 
 // Level 2's jet at Qmax, from fluid.pvd beside history.csv (none at level 1).
@@ -220,6 +237,8 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
     in.wall_stress = capacity_picture(o, simulated.get());
     if (in.wall_stress && in.wall_stress->png.empty()) log()->warn("{}", in.wall_stress->message);
     in.fluid_jet = jet_picture(o, simulated.get());
+    in.wall_viewer = wall_viewer(o, simulated.get());
+    in.three_js_dir = three_js_dir();
   }
 
   nlohmann::json metrics;

@@ -25,9 +25,9 @@ std::vector<std::string> long_option_names(const CLI::App& app) {
   return names;
 }
 
-// "unknown option --mu (did you mean --mu-kpa?)" for every unexpected option; CLI11's
-// own text when the extras are stray values only.
-std::string unexpected_arguments(const CLI::App& app, const CLI::ExtrasError& error) {
+}  // namespace
+
+std::string unknown_options_message(const CLI::App& app, const std::string& fallback) {
   std::string message;
   for (const std::string& extra : app.remaining()) {
     if (extra.size() < 3 || extra.compare(0, 2, "--") != 0) continue;
@@ -36,10 +36,8 @@ std::string unexpected_arguments(const CLI::App& app, const CLI::ExtrasError& er
     message += (message.empty() ? "" : "; ") + std::string("unknown option --") + name;
     if (!match.empty()) message += " (did you mean --" + match + "?)";
   }
-  return message.empty() ? error.what() : message;
+  return message.empty() ? fallback : message;
 }
-
-}  // namespace
 
 void add_common_options(CLI::App& app, CommonOptions& options) {
   app.add_option("--report", options.report, "Write the stage summary (JSON) here");
@@ -65,7 +63,7 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
     return 0;
   } catch (const CLI::ExtrasError& e) {
     std::fprintf(stderr, "%s: usage error: %s (see %s --help)\n", tool.c_str(),
-                 unexpected_arguments(app, e).c_str(), tool.c_str());
+                 unknown_options_message(app, e.what()).c_str(), tool.c_str());
     return 2;
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "%s: usage error: %s (see %s --help)\n", tool.c_str(), e.what(),

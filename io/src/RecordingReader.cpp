@@ -24,15 +24,34 @@ struct Channel {
   std::vector<std::string> plain_names;  // accepted unsuffixed names besides the key
 };
 
+// Besides the key, a channel answers to the names of the ICS standard (Pves, Pabd, Pdet,
+// Qura, Vura, Vinf) and to the spellings urodynamic systems commonly export; headers are
+// compared in lower case.
 const std::vector<Channel>& channels() {
   static const std::vector<Channel> all = {
-      {"time", Quantity::Time, {}},     {"event", Quantity::Text, {"label", "comment"}},
-      {"pves", Quantity::Pressure, {}}, {"pabd", Quantity::Pressure, {}},
-      {"pdet", Quantity::Pressure, {}}, {"flow", Quantity::Flow, {}},
-      {"voided", Quantity::Volume, {}}, {"infused", Quantity::Volume, {}},
-      {"volume", Quantity::Volume, {}},
+      {"time", Quantity::Time, {"t", "elapsed time"}},
+      {"event", Quantity::Text, {"label", "comment", "events", "marker"}},
+      {"pves", Quantity::Pressure, {"p ves", "p_ves", "p-ves", "p.ves", "vesical pressure"}},
+      {"pabd", Quantity::Pressure, {"p abd", "p_abd", "p-abd", "p.abd", "abdominal pressure"}},
+      {"pdet", Quantity::Pressure, {"p det", "p_det", "p-det", "p.det", "detrusor pressure"}},
+      {"flow", Quantity::Flow, {"qura", "q ura", "uroflow", "flow rate", "urine flow"}},
+      {"voided", Quantity::Volume, {"vura", "v ura", "voided volume", "vvoid", "voided_volume"}},
+      {"infused",
+       Quantity::Volume,
+       {"vinf", "v inf", "infused volume", "vinfus", "infused_volume"}},
+      {"volume", Quantity::Volume, {"vbladder", "bladder volume"}},
   };
   return all;
+}
+
+bool names_channel(const Channel& ch, const std::string& lower_name) {
+  return lower_name == ch.key || std::find(ch.plain_names.begin(), ch.plain_names.end(),
+                                           lower_name) != ch.plain_names.end();
+}
+
+bool names_any_channel(const std::string& lower_name) {
+  return std::any_of(channels().begin(), channels().end(),
+                     [&](const Channel& c) { return names_channel(c, lower_name); });
 }
 
 // Factor from a unit (lowercase, "_" or "/" separated) to the channel's clinical unit;
@@ -112,26 +131,33 @@ double default_factor(const Channel& ch, const ReaderOptions& options, const std
   return *f;
 }
 
-// Unit of a column found by its default name: "<key>_<unit>" or the bare key.
+// Unit of a column found by its default name: "<name>_<unit>", "<name> [unit]" or the bare
+// name. A bracket holding another name rather than a unit ("flow (Qura)") is a gloss.
 std::optional<BoundColumn> bind_default(const Channel& ch, const std::vector<std::string>& header,
                                         const ReaderOptions& options, const std::string& file) {
   for (std::size_t i = 0; i < header.size(); ++i) {
-    const std::string h = detail::lower_case(header[i]);
-    std::vector<std::string> plain = ch.plain_names;
-    plain.push_back(ch.key);
+    const std::string h = detail::lower_case(trim(header[i]));
     if (const auto bu = bracket_unit(h)) {
       const std::string base = trim(h.substr(0, h.find_first_of("[(")));
-      if (base != ch.key) continue;
+      if (!names_channel(ch, base)) continue;
+      if (names_any_channel(*bu))
+        return BoundColumn{&ch, i, header[i], default_factor(ch, options, file, header[i])};
       const auto f = unit_factor(ch.quantity, *bu);
       if (!f)
         fail(file, column_place(header[i]) + ": unknown unit \"" + *bu + "\"",
              unit_hint(ch.quantity));
       return BoundColumn{&ch, i, header[i], *f};
     }
-    if (std::find(plain.begin(), plain.end(), h) != plain.end())
+    if (names_channel(ch, h))
       return BoundColumn{&ch, i, header[i], default_factor(ch, options, file, header[i])};
+    if (ch.quantity == Quantity::Text) continue;
+    // Another spelling with a unit suffix ("qura_ml_s"): only when the suffix is a unit.
+    for (const std::string& name : ch.plain_names)
+      if (h.rfind(name + "_", 0) == 0)
+        if (const auto f = unit_factor(ch.quantity, h.substr(name.size() + 1)))
+          return BoundColumn{&ch, i, header[i], *f};
     const std::string prefix = std::string(ch.key) + "_";
-    if (h.rfind(prefix, 0) == 0 && ch.quantity != Quantity::Text) {
+    if (h.rfind(prefix, 0) == 0) {
       const std::string unit = h.substr(prefix.size());
       const auto f = unit_factor(ch.quantity, unit);
       if (!f)
@@ -228,7 +254,8 @@ std::vector<BoundColumn> bind_columns(const std::vector<std::string>& header,
     return std::any_of(bound.begin(), bound.end(),
                        [&](const BoundColumn& b) { return std::string(b.channel->key) == key; });
   };
-  const std::string hint = columns_found(header) + "; map one with --columns KEY=NAME";
+  // The fix first: a long header list is what the one-line cap may cut, never the fix.
+  const std::string hint = "map one with --columns KEY=NAME; " + columns_found(header);
   if (!has("pdet") && !(has("pves") && has("pabd")))
     fail(file, "missing columns for pressure (pdet_cmh2o, or pves_cmh2o and pabd_cmh2o)", hint);
   const bool filled = has("infused") || has("volume");

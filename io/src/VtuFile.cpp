@@ -27,6 +27,8 @@
 namespace vesica::io {
 namespace {
 
+constexpr const char* kLengthUnitArray = "length_unit_m";
+
 vtkSmartPointer<vtkDataArray> to_vtk(const VtuArray& a, vtkIdType tuples, const std::string& file) {
   if (a.components < 1 || a.values.size() != static_cast<std::size_t>(tuples * a.components))
     fail(file, "array " + a.name + " has " + std::to_string(a.values.size()) + " values for " +
@@ -67,10 +69,11 @@ vtkNew<vtkUnstructuredGrid> to_grid(const VtuGrid& g, const std::string& file) {
   for (const VtuArray& a : g.cell_data)
     grid->GetCellData()->AddArray(to_vtk(a, g.triangles.rows() + g.tets.rows(), file));
   for (const VtuArray& a : g.field_data) grid->GetFieldData()->AddArray(to_vtk(a, 1, file));
-  vtkNew<vtkStringArray> units;
-  units->SetName("units");
-  units->InsertNextValue("mm");
-  grid->GetFieldData()->AddArray(units);
+  // The unit as a number, not a string: meshio's VTU reader stops at a String array.
+  vtkNew<vtkDoubleArray> unit;
+  unit->SetName(kLengthUnitArray);
+  unit->InsertNextValue(1e-3);
+  grid->GetFieldData()->AddArray(unit);
   return grid;
 }
 
@@ -117,6 +120,19 @@ VtuArray cell_vector(const char* name, const Eigen::MatrixXd& tri, Eigen::Index 
   return a;
 }
 
+// Coordinates must be in mm: files of vesica say so with "length_unit_m" = 0.001; files
+// written before that with the string "units" = "mm". A file with neither is taken as mm.
+void check_length_unit(vtkUnstructuredGrid& grid, const std::string& file) {
+  vtkFieldData* field = grid.GetFieldData();
+  if (auto* units = vtkStringArray::SafeDownCast(field->GetAbstractArray("units"));
+      units && units->GetNumberOfValues() > 0 && units->GetValue(0) != "mm")
+    fail(file, "coordinates are in '" + units->GetValue(0) + "', expected mm");
+  vtkDataArray* unit = field->GetArray(kLengthUnitArray);
+  if (unit && unit->GetNumberOfTuples() > 0 && std::abs(unit->GetComponent(0, 0) - 1e-3) > 1e-12)
+    fail(file, "coordinates are in units of " + std::to_string(unit->GetComponent(0, 0)) +
+                   " m (field " + kLengthUnitArray + "), expected mm (0.001)");
+}
+
 }  // namespace
 
 const VtuArray* VtuGrid::cell_array(const std::string& name) const {
@@ -139,12 +155,13 @@ void write_vtu(const VtuGrid& g, const std::filesystem::path& path,
     writer->SetFileName(tmp.c_str());
     writer->SetInputData(grid);
     writer->SetDataModeToAppended();
-    if (options.compress) {
+    // Base64, not raw bytes: meshio's reader of raw appended data finds each array by its
+    // offset after renumbering earlier ones, and takes the wrong array when the numbers meet.
+    writer->EncodeAppendedDataOn();
+    if (options.compress)
       writer->SetCompressorTypeToZLib();
-    } else {
+    else
       writer->SetCompressorTypeToNone();
-      writer->EncodeAppendedDataOff();  // raw bytes: no base64 pass
-    }
     const auto errors = detail::watch_errors(writer);
     if (writer->Write() != 1 || errors->any() || writer->GetErrorCode() != vtkErrorCode::NoError)
       fail(path.string(), "could not write the VTU file: " +
@@ -164,9 +181,7 @@ VtuGrid read_vtu(const std::filesystem::path& path) {
   if (errors->any())
     fail(name, "cannot read the VTU file: " + detail::vtk_message_line(errors->message()));
   vtkUnstructuredGrid* grid = reader->GetOutput();
-  auto* units = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("units"));
-  if (units && units->GetNumberOfValues() > 0 && units->GetValue(0) != "mm")
-    fail(name, "coordinates are in '" + units->GetValue(0) + "', expected mm");
+  check_length_unit(*grid, name);
 
   VtuGrid g;
   g.points_mm.resize(grid->GetNumberOfPoints(), 3);
@@ -208,10 +223,11 @@ VtuGrid read_vtu(const std::filesystem::path& path) {
   for (int a = 0; a < grid->GetPointData()->GetNumberOfArrays(); ++a)
     if (vtkDataArray* array = grid->GetPointData()->GetArray(a))
       g.point_data.push_back(from_vtk(array, point_order));
-  // GetArray gives the numeric arrays only: the "units" string is checked above.
+  // GetArray gives the numeric arrays only; the unit, checked above, is the file's, not data.
   vtkFieldData* field = grid->GetFieldData();
   for (int a = 0; a < field->GetNumberOfArrays(); ++a)
-    if (vtkDataArray* array = field->GetArray(a); array && array->GetNumberOfTuples() > 0)
+    if (vtkDataArray* array = field->GetArray(a); array && array->GetNumberOfTuples() > 0 &&
+                                                  std::string(kLengthUnitArray) != array->GetName())
       g.field_data.push_back(from_vtk(array, {0}));
   return g;
 }

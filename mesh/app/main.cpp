@@ -1,7 +1,8 @@
 // vesica-mesh SURFACE -o bladder.msh [--fluid] [--thickness-mm 3] [...]
 // Membrane elements of the bladder wall and, with --fluid, the conforming tetrahedra of
 // the urine; writes bladder.msh (Gmsh 4.1) and bladder.vtu beside it. Its options are the
-// mesh parameter table (MeshParameters.h).
+// mesh parameter table (MeshParameters.h). Given a .msh edited in Gmsh instead of a surface,
+// it makes the .vtu beside -o follow that mesh.
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "vesica/io/MshFile.h"
 #include "vesica/io/VtuFile.h"
 #include "vesica/mesh/BladderMesh.h"
+#include "vesica/mesh/EditedMesh.h"
 #include "vesica/mesh/MeshParameters.h"
 #include "vesica/mesh/MeshQuality.h"
 #include "vesica/mesh/SurfaceReader.h"
@@ -65,10 +67,60 @@ nlohmann::json region_counts(const VolumeMesh& mesh) {
   return counts;
 }
 
+// An edited .msh as the input (`vesica-mesh bladder.msh -o bladder.msh` after a Gmsh edit):
+// the .vtu beside the output follows it, so that ParaView shows the edited wall; the fields
+// Gmsh does not keep are recomputed as for a new mesh and named in a warning. The edited
+// .msh itself is left as it is when it is the output.
+int follow_edited_msh(const Paths& o, const MeshSettings& settings, const ParameterTable& table,
+                      const CommonOptions& common, StageRecord& record) {
+  const std::filesystem::path input(o.input), output(o.output);
+  record.parameters() = table.values();
+  record.add_input(o.input);
+  VolumeMesh mesh = io::read_msh(input).mesh;
+  MembraneOptions membrane = settings.membrane;
+  const SurfaceMesh wall{mesh.nodes, mesh.triangles, mesh.tri_region};
+  if (settings.fiber_long_axis) membrane.fiber_direction = long_axis(wall);
+  std::string filled;
+  for (const std::string& f : complete_membrane_fields(mesh, membrane))
+    filled += (filled.empty() ? "" : ", ") + f;
+  if (!filled.empty())
+    log()->warn(
+        "{}: has no {} (Gmsh drops them when it saves an edit): recomputed as for a "
+        "new mesh",
+        o.input, filled);
+  std::error_code ec;
+  const bool in_place = std::filesystem::equivalent(input, output, ec);
+  if (!in_place) {
+    io::write_msh(mesh, output);
+    record.add_output(output);
+  }
+  const std::filesystem::path vtu = io::vtu_beside(output);
+  io::write_mesh_vtu(mesh, vtu);
+  record.add_output(vtu);
+  auto& s = record.summary();
+  s["triangle_count"] = mesh.triangles.rows();
+  s["tetrahedron_count"] = mesh.tets.rows();
+  s["node_count"] = mesh.nodes.rows();
+  s["wall_area_cm2"] = triangle_areas_mm2(wall).sum() / 100.0;
+  s["region_triangle_counts"] = region_counts(mesh);
+  s["recomputed"] = filled;
+  s["msh"] = output.string();
+  s["vtu"] = vtu.string();
+  // In place, the manifest is the .vtu's: the mesh stage's own (named by its .msh) stays.
+  const nlohmann::json written = record.write(
+      common.report, default_manifest_path(common, in_place ? vtu.string() : o.output));
+  if (common.json) std::printf("%s\n", written.dump(2).c_str());
+  log()->info("wrote {} ({} triangles, {} tetrahedra), following {}", vtu.string(),
+              mesh.triangles.rows(), mesh.tets.rows(), o.input);
+  return 0;
+}
+
 int run(const Paths& o, const MeshSettings& settings, const ParameterTable& table,
         const CommonOptions& common, StageRecord& record) {
   const std::filesystem::path output(o.output);
   if (output.extension() != ".msh") usage_error("-o must name a .msh file, got '" + o.output + "'");
+  if (std::filesystem::path(o.input).extension() == ".msh")
+    return follow_edited_msh(o, settings, table, common, record);
   MembraneOptions membrane = settings.membrane;
   std::optional<CavityOptions> cavity;
   if (settings.fluid) cavity = settings.cavity;
@@ -130,7 +182,8 @@ int main(int argc, char** argv) {
   ParameterTable table = parameter_table(settings);
   CommonOptions common;
   app.add_option("surface", paths.input,
-                 "Closed bladder surface (.vtp with 'region', .stl, .ply, .obj)")
+                 "Closed bladder surface (.vtp with 'region', .stl, .ply, .obj), or a .msh "
+                 "edited in Gmsh: the .vtu beside -o then follows it")
       ->required();
   app.add_option("-o,--output", paths.output, "Output Gmsh mesh (.msh); the .vtu goes beside it")
       ->required();

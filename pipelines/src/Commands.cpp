@@ -12,6 +12,7 @@
 #include "Joined.h"
 #include "RunnerTerminal.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/StageMain.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/core/Version.h"
 #include "vesica/pipelines/AcceptEdits.h"
@@ -89,6 +90,10 @@ Loaded load(const std::string& file, const std::string& workdir) {
 int parse(CLI::App& app, int argc, char** argv) {
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ExtrasError& e) {
+    std::fprintf(stderr, "vesica %s: usage error: %s (see vesica help)\n", app.get_name().c_str(),
+                 unknown_options_message(app, e.what()).c_str());
+    return 2;
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::fprintf(stderr, "vesica %s: usage error: %s (see vesica help)\n", app.get_name().c_str(),
@@ -195,9 +200,9 @@ bool update_study_outputs(const Plan& plan, const RunResult& r) {
 
 // Runs the plan under the workdir's lock; shared by `run` and `reset`.
 int execute(const Loaded& l, RunOptions options, bool json) {
-  detail::RunnerTerminal terminal(!json && ::isatty(STDERR_FILENO));
+  detail::RunnerTerminal terminal(::isatty(STDERR_FILENO) != 0, !json);
   // Stages show their progress only on a terminal; theirs is the runner's pipe, so the
-  // runner asks for it and draws it (vesica/core/Progress.h).
+  // runner asks for it and draws it, or logs a line per step (vesica/core/Progress.h).
   if (terminal.shows_progress()) ::setenv("VESICA_PROGRESS", "1", 1);
   options.capture = json;
   if (!json) {

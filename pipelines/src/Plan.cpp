@@ -38,6 +38,14 @@ std::string normal_path(const std::string& path) {
 
 namespace {
 
+// A pipeline installed with vesica (<prefix>/share/vesica/pipelines, beside <prefix>/bin):
+// its own workdir would be under /usr/share, which a user cannot write and root should not.
+bool is_installed_pipeline(const fs::path& file, const fs::path& bin_dir) {
+  std::error_code ec;
+  const fs::path installed = bin_dir / ".." / "share" / "vesica" / "pipelines";
+  return fs::equivalent(fs::absolute(file).parent_path(), installed, ec) && !ec;
+}
+
 std::string dashed(std::string key) {
   std::replace(key.begin(), key.end(), '_', '-');
   return key;
@@ -67,9 +75,12 @@ class Planner {
     plan_.question = spec.study.question;
     plan_.limits = spec.study.limits;
     const fs::path base = spec.file.parent_path();
-    plan_.workdir = options.workdir_override.empty()
-                        ? (base / spec.workdir).lexically_normal()
-                        : fs::absolute(options.workdir_override).lexically_normal();
+    if (!options.workdir_override.empty())
+      plan_.workdir = fs::absolute(options.workdir_override).lexically_normal();
+    else if (is_installed_pipeline(spec.file, options.bin_dir))
+      plan_.workdir = (fs::current_path() / spec.name).lexically_normal();
+    else
+      plan_.workdir = (base / spec.workdir).lexically_normal();
     for (const auto& e : spec.externals) {
       const fs::path abs = (base / e.path).lexically_normal();
       if (!fs::exists(abs))

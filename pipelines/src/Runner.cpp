@@ -14,6 +14,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/pipelines/ChildProcess.h"
 #include "vesica/pipelines/EditBackup.h"
+#include "vesica/pipelines/MeshEditFollow.h"
 #include "vesica/pipelines/SignalRelay.h"
 #include "vesica/pipelines/StageCheckpoint.h"
 #include "vesica/pipelines/StageFailure.h"
@@ -108,6 +109,9 @@ class Execution {
 
   RunResult run() {
     fs::create_directories(plan_.workdir / state::kFolder);
+    for (std::size_t i = 0; i < plan_.stages.size(); ++i)
+      if (result_.stages[i].action == "kept")
+        follow_kept_mesh_edit(plan_, i, [&](const std::string& line) { say(line); });
     SignalRelay relay;
     while (true) {
       if (!relay_signal_ && (result_.ok || options_.keep_going)) launch_ready();

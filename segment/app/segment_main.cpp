@@ -6,13 +6,13 @@
 
 #include <CLI/CLI.hpp>
 
-#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/NumberRange.h"
 #include "vesica/core/ParameterCli.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/io/LabelMap.h"
 #include "vesica/segment/BladderSegmenter.h"
 #include "vesica/segment/DicomSeries.h"
 #include "vesica/segment/LabelStatistics.h"
@@ -164,8 +164,7 @@ int main(int argc, char** argv) {
     }
     {
       vesica::PhaseTimer t(record, "write");
-      vesica::write_atomically(
-          output, [&](const std::filesystem::path& tmp) { seg::write_label(*result.label, tmp); });
+      vesica::io::write_label_map(seg::to_label_map(*result.label), output);  // atomic itself
     }
     record.add_input(input);
     record.add_output(output);

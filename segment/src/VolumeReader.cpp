@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include <itkImageFileReader.h>
-#include <itkImageFileWriter.h>
+#include <itkImageRegionConstIterator.h>
 #include <itkMetaImageIO.h>
 #include <itkNiftiImageIO.h>
 #include <itkNrrdImageIO.h>
@@ -109,17 +109,19 @@ Volume read_volume(const std::filesystem::path& input, const std::string& series
   check_values(*v.image, input.string());
   return v;
 }
-void write_label(const LabelImage& label, const std::filesystem::path& path) {
-  auto writer = itk::ImageFileWriter<LabelImage>::New();
-  writer->SetInput(&label);
-  writer->SetFileName(path.string());
-  writer->SetImageIO(io_for(format_of(path)));
-  writer->UseCompressionOn();
-  try {
-    writer->Update();
-  } catch (const itk::ExceptionObject& e) {
-    fail(path.string(), std::string("cannot write label map: ") + e.GetDescription());
+io::LabelMap to_label_map(const LabelImage& label) {
+  io::LabelMap out;
+  const auto region = label.GetLargestPossibleRegion();
+  for (unsigned d = 0; d < 3; ++d) {
+    out.size[d] = static_cast<int>(region.GetSize(d));
+    out.spacing_mm[d] = label.GetSpacing()[d];
+    out.origin_mm[d] = label.GetOrigin()[d];
+    for (unsigned e = 0; e < 3; ++e) out.direction[3 * d + e] = label.GetDirection()(d, e);
   }
+  out.voxels.reserve(region.GetNumberOfPixels());
+  for (itk::ImageRegionConstIterator<LabelImage> it(&label, region); !it.IsAtEnd(); ++it)
+    out.voxels.push_back(it.Get() != 0 ? 1 : 0);
+  return out;
 }
 
 }  // namespace vesica::segment

@@ -2,8 +2,10 @@
 // 1280-px window. After load the page must hold the trace, the three plots (each with drawn
 // data), the parameter and criteria tables and the wall-stress picture; no script error;
 // no element wider than the window; no debug text. report.pdf, printed by the same
-// chromium, must be a PDF of several A4 pages. The screenshot, the page and the PDF stay in
-// build/test-artefacts/report for a look.
+// chromium, must be a PDF of several A4 pages. The interactive wall (WebGL through
+// SwiftShader, as a machine without a GPU draws it) must draw, and its time slider move the
+// trace's cursor. The screenshots, the pages and the PDF stay in build/test-artefacts/report
+// for a look.
 #include <regex>
 #include <set>
 
@@ -15,6 +17,7 @@
 #include <vtkUnsignedCharArray.h>
 
 #include "CompareTestSupport.h"
+#include "vesica/io/PvdSeries.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::test;
@@ -28,6 +31,9 @@ std::string chromium(const fs::path& profile) {
          "--user-data-dir=" +
          profile.string();
 }
+
+// WebGL without a GPU: Chromium's software renderer, which it only uses when told.
+const char* kSoftwareWebGl = " --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader";
 
 // Fraction of pixels that are not (near) white, and whether several colours occur.
 struct Ink {
@@ -128,4 +134,62 @@ TEST(ReportBrowser, TheReportFitsA1280WindowWithEveryPartDrawnAndPrints) {
   ASSERT_TRUE(std::regex_search(bytes, pages, std::regex("/Count ([0-9]+)")));
   EXPECT_GE(std::stoi(pages[1]), 2);
   EXPECT_NE(bytes.find("/MediaBox [0 0 594.9"), std::string::npos) << "not A4";
+}
+
+// A simulation with its series: five frames of the stress sphere over filling and voiding.
+TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
+  if (run_command("command -v chromium").exit_code != 0) {
+    if (running_in_ci()) FAIL() << "chromium is not installed";
+    GTEST_SKIP() << "chromium is not installed";
+  }
+  const fs::path dir = scratch_dir("compare-browser-wall3d");
+  fs::create_directories(dir / "sim/series");
+  std::vector<std::pair<double, std::string>> steps;
+  for (int k = 0; k < 5; ++k) {
+    const std::string file = "series/step_000" + std::to_string(k) + ".vtu";
+    write_stress_sphere(dir / "sim" / file);
+    steps.emplace_back(std::vector<double>{0, 100, 200, 360, 390}[k], file);
+  }
+  std::ofstream(dir / "sim/series.pvd") << vesica::io::pvd_text(steps);
+  fs::copy_file(compare_data("synthetic-history.csv"), dir / "sim/history.csv");
+  const auto run = run_command(
+      compare_exe() + " --measured " + compare_data("normal-female-34y.csv").string() +
+      " --simulated " + (dir / "sim/history.csv").string() + " -o " + (dir / "report").string());
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const fs::path page = dir / "report" / "index.html";
+  const std::string html = read_text(page);
+  ASSERT_NE(html.find("id=\"wall3d-canvas\""), std::string::npos) << "no interactive wall";
+  EXPECT_EQ(html.find("<script src="), std::string::npos) << "the page must fetch nothing";
+  const fs::path keep = artefact_dir("report");
+  fs::copy_file(page, keep / "index-wall3d.html", fs::copy_options::overwrite_existing);
+
+  const auto dom = run_command(chromium(dir / "profile1") + kSoftwareWebGl +
+                               " --window-size=1280,900 --enable-logging=stderr --v=0 "
+                               "--dump-dom 'file://" +
+                               page.string() + "#check-slider'");
+  ASSERT_EQ(dom.exit_code, 0) << dom.output;
+  EXPECT_EQ(dom.output.find("Uncaught"), std::string::npos) << dom.output;
+  EXPECT_NE(dom.output.find("<pre id=\"js-errors\" hidden=\"\"></pre>"), std::string::npos);
+  EXPECT_EQ(body_data(dom.output, "overflowing"), "0");
+  const std::string ink = body_data(dom.output, "wall3d-ink");
+  ASSERT_FALSE(ink.empty()) << dom.output.substr(0, 3000);
+  EXPECT_GT(std::stod(ink), 0.05) << "the canvas is blank";
+  // The slider's ends: the first frame (t = 0 s) and the last (390 s) put the cursor at the
+  // trace's left and further right; the capacity frame (360 s) is labelled as such.
+  EXPECT_EQ(body_data(dom.output, "wall3d-capacity-label").rfind("nearest capacity: t = 360 s", 0),
+            0u)
+      << body_data(dom.output, "wall3d-capacity-label");
+  const double first = std::stod(body_data(dom.output, "wall3d-first-cursor"));
+  const double last = std::stod(body_data(dom.output, "wall3d-last-cursor"));
+  const double capacity = std::stod(body_data(dom.output, "wall3d-capacity-cursor"));
+  EXPECT_LT(first, capacity);
+  EXPECT_LT(capacity, last);
+  EXPECT_EQ(body_data(dom.output, "wall3d-last-label").rfind("t = 390 s", 0), 0u);
+
+  const fs::path shot = keep / "report-wall3d-1280.png";
+  const auto s = run_command(chromium(dir / "profile2") + kSoftwareWebGl +
+                             " --window-size=1280,4200 --screenshot=" + shot.string() + " file://" +
+                             page.string());
+  ASSERT_EQ(s.exit_code, 0) << s.output;
+  EXPECT_GT(ink_of(shot).colours, 8);
 }

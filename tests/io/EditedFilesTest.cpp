@@ -2,7 +2,9 @@
 //  - a PLY subdivided in MeshLab (4x the triangles, the sidecar left as it was) is
 //    re-tagged by the nearest recorded centroid alike by vesica-surface and vesica-mesh;
 //  - a .msh whose nodes were moved in Gmsh is what vesica-simulate reads: the wall
-//    encloses the edited volume and the run changes.
+//    encloses the edited volume and the run changes;
+//  - a .msh refined in Gmsh and saved in place gets a .vtu beside it that follows it
+//    (`vesica-mesh b.msh -o b.msh`), with the fields Gmsh dropped recomputed and named.
 #include <gtest/gtest.h>
 
 #include <gmsh.h>
@@ -13,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "GmshRefine.h"
 #include "ShellCommand.h"
 #include "TestData.h"
 #include "vesica/core/ContentHash.h"
@@ -144,14 +147,52 @@ nlohmann::json read_json(const fs::path& p) {
   return nlohmann::json::parse(in);
 }
 
-TEST(EditedFiles, MshEditedInGmshIsWhatTheSimulationReads) {
-  const fs::path dir = scratch_dir("io-edited-msh");
+// b.vtp, a 100 ml sphere, meshed by vesica-mesh into b.msh and b.vtu in `dir`.
+bool mesh_a_sphere(const fs::path& dir) {
   auto r = run_command(tool("vesica-surface") + " --shape sphere --volume-ml 100 --edge-mm 8 -o " +
                        (dir / "b.vtp").string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = run_command(tool("vesica-mesh") + " " + (dir / "b.vtp").string() + " -o " +
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  if (r.exit_code == 0)
+    r = run_command(tool("vesica-mesh") + " " + (dir / "b.vtp").string() + " -o " +
+                    (dir / "b.msh").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return r.exit_code == 0;
+}
+
+TEST(EditedFiles, AMshRefinedInGmshLeavesAMatchingVtuBesideIt) {
+  const fs::path dir = scratch_dir("io-refined-msh");
+  ASSERT_TRUE(mesh_a_sphere(dir));
+  CommandResult r;
+  const long before = io::read_mesh_vtu(dir / "b.vtu").triangles.rows();
+
+  refine_in_gmsh(dir / "b.msh");
+  r = run_command(tool("vesica-mesh") + " " + (dir / "b.msh").string() + " -o " +
                   (dir / "b.msh").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  // The fields Gmsh does not keep are named, once each.
+  EXPECT_NE(r.output.find("has no thickness_mm (3 mm everywhere), fiber1, fiber2"),
+            std::string::npos)
+      << r.output;
+
+  // Splitting every triangle into four: the .vtu now is the refined mesh, node for node.
+  const io::VolumeMesh vtu = io::read_mesh_vtu(dir / "b.vtu");
+  const simulate::WallModel msh = simulate::read_wall(dir / "b.msh", 3e-3);
+  EXPECT_EQ(vtu.triangles.rows(), 4 * before);
+  ASSERT_EQ(static_cast<std::size_t>(vtu.triangles.rows()), msh.triangle_count());
+  const simulate::WallModel from_vtu = simulate::read_wall(dir / "b.vtu", 3e-3);
+  ASSERT_EQ(from_vtu.node_count(), msh.node_count());
+  EXPECT_EQ(from_vtu.triangles, msh.triangles);
+  EXPECT_EQ(from_vtu.region, msh.region);
+  EXPECT_EQ(from_vtu.thickness, msh.thickness);
+  for (std::size_t i = 0; i < msh.node_count(); ++i)
+    EXPECT_LT((from_vtu.nodes[i] - msh.nodes[i]).norm(), 1e-15);
+  EXPECT_EQ(vtu.fiber1.rows(), vtu.triangles.rows());
+}
+
+TEST(EditedFiles, MshEditedInGmshIsWhatTheSimulationReads) {
+  const fs::path dir = scratch_dir("io-edited-msh");
+  ASSERT_TRUE(mesh_a_sphere(dir));
+  CommandResult r;
 
   // The .msh carries what the .vtu beside it does.
   const simulate::WallModel from_msh = simulate::read_wall(dir / "b.msh", 3e-3);

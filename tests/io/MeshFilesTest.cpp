@@ -1,6 +1,6 @@
 // The mesh files of vesica-mesh round-trip through vesica_io and are read the same way by
-// independent readers: meshio (.msh; its .vtu reader rejects VTK's string field data) and
-// VTK's own reader (.vtu). The .msh keeps
+// independent readers: meshio (.msh, .vtu and every step of a .pvd series) and VTK's own
+// reader (.vtu). The .msh keeps
 // thickness and fibers as element data, and a mesh whose views no longer fit its nodes
 // loses them with a note instead of giving wrong fibers.
 #include <gtest/gtest.h>
@@ -10,7 +10,6 @@
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -45,6 +44,9 @@ out = {"points": [list(map(float, p)) for p in m.points],
 for name in ("thickness_mm", "region"):
     if name in m.cell_data:
         out[name] = [float(v) for block in m.cell_data[name] for v in block]
+out["point_arrays"] = {k: [float(x) for x in v.ravel()[:3]] + [len(v)]
+                       for k, v in m.point_data.items()}
+out["field"] = {k: [float(x) for x in v.ravel()] for k, v in m.field_data.items()}
 print(json.dumps(out))
 )";
 
@@ -126,9 +128,10 @@ TEST(MeshFiles, VtuRoundTripAndContract) {
   reader->SetFileName((dir / "b.vtu").c_str());
   reader->Update();
   vtkUnstructuredGrid* grid = reader->GetOutput();
-  auto* units = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("units"));
-  ASSERT_NE(units, nullptr);
-  EXPECT_EQ(units->GetValue(0), "mm");
+  vtkDataArray* unit = grid->GetFieldData()->GetArray("length_unit_m");
+  ASSERT_NE(unit, nullptr);
+  EXPECT_EQ(unit->GetComponent(0, 0), 1e-3);
+  EXPECT_EQ(grid->GetFieldData()->GetAbstractArray("units"), nullptr);  // no String arrays
   auto* region = vtkIntArray::SafeDownCast(grid->GetCellData()->GetArray("region"));
   ASSERT_NE(region, nullptr);
   EXPECT_EQ(region->GetValue(grid->GetNumberOfCells() - 1), 10);  // a tetrahedron
@@ -164,6 +167,48 @@ TEST(MeshFiles, SeriesListsItsStepsWithTimesAndTheirArrays) {
   EXPECT_DOUBLE_EQ(back.point_array("displacement_mm")->values[0], 0.1 * 10.0);
   ASSERT_NE(back.cell_array("region"), nullptr);
   EXPECT_TRUE(back.cell_array("region")->integer);
+}
+
+// ParaView users and Python users open the same files: meshio (Debian's python3-meshio)
+// reads the mesh .vtu and each step of a series, cell for cell.
+TEST(MeshFiles, MeshioReadsTheMeshVtuAndEverySeriesStep) {
+  const io::VolumeMesh m = octahedron_mesh();
+  const auto dir = scratch_dir("io-vtu-meshio");
+  io::write_mesh_vtu(m, dir / "b.vtu");
+  const nlohmann::json j = meshio_summary(dir / "b.vtu");
+  EXPECT_EQ(j.value("triangles", -1), m.triangles.rows());
+  EXPECT_EQ(j.value("tetra", -1), m.tets.rows());
+  ASSERT_TRUE(j.contains("thickness_mm"));
+  EXPECT_EQ(j["thickness_mm"][0].get<double>(), m.thickness_mm(0));
+
+  io::PvdSeries series(dir, "series");
+  for (int step = 0; step < 3; ++step) {
+    io::VtuGrid frame;
+    frame.points_mm = m.nodes;
+    frame.triangles = m.triangles;
+    frame.point_data.push_back(
+        {"displacement_mm", 3, std::vector<double>(m.nodes.size(), 0.5), false});
+    frame.cell_data.push_back({"region", 1, std::vector<double>(m.triangles.rows(), 1.0), true});
+    // The field arrays of a simulation's step, then its displacement: meshio once took the
+    // one for the other when they were raw bytes.
+    frame.field_data.push_back({"volume_ml", 1, {100.0 + step}, false});
+    frame.field_data.push_back({"pdet_cmh2o", 1, {8.5}, false});
+    series.add_step(2.0 * step, frame);
+  }
+  series.finish();
+  for (const auto& [time_s, file] : io::read_pvd(series.pvd_path())) {
+    const nlohmann::json s = meshio_summary(dir / file);
+    EXPECT_EQ(s.value("triangles", -1), m.triangles.rows()) << file;
+    ASSERT_TRUE(s.contains("region")) << file;
+    EXPECT_EQ(s["region"][0].get<double>(), 1.0) << file;
+    EXPECT_EQ(s["names"], nlohmann::json({"length_unit_m", "pdet_cmh2o", "time_s", "volume_ml"}))
+        << file;
+    EXPECT_EQ(s["field"]["length_unit_m"], nlohmann::json({1e-3})) << file;
+    EXPECT_EQ(s["field"]["time_s"], nlohmann::json({time_s})) << file;
+    EXPECT_EQ(s["point_arrays"]["displacement_mm"],
+              nlohmann::json({0.5, 0.5, 0.5, static_cast<double>(m.nodes.rows())}))
+        << file;
+  }
 }
 
 }  // namespace

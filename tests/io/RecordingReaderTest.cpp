@@ -146,3 +146,54 @@ TEST(RecordingReader, ByteOrderMarkOfASpreadsheetExportIsIgnored) {
   EXPECT_DOUBLE_EQ(r.pdet_recorded_cmh2o[1], 2);
   EXPECT_DOUBLE_EQ(r.infused_ml[1], 50);
 }
+
+// The ICS standard's channel names, as the shared recording's own notes name them, read
+// without --columns.
+TEST(RecordingReader, IcsChannelNamesReadWithoutAColumnMap) {
+  const fs::path p = write_csv("reader-ics",
+                               "Time,Pves,Pabd,Pdet,Qura,Vura,Vinf\n"
+                               "00:10,10,4,6,0,0,25\n"
+                               "00:40,14,5,9,12.5,30,300\n");
+  const vc::Recording r = vc::read_recording(p);
+  ASSERT_EQ(r.rows(), 2u);
+  EXPECT_EQ(r.time_s, (std::vector<double>{10, 40}));
+  EXPECT_EQ(r.pves_cmh2o, (std::vector<double>{10, 14}));
+  EXPECT_EQ(r.pabd_cmh2o, (std::vector<double>{4, 5}));
+  EXPECT_EQ(r.pdet_recorded_cmh2o, (std::vector<double>{6, 9}));
+  EXPECT_EQ(r.flow_ml_s, (std::vector<double>{0, 12.5}));
+  EXPECT_EQ(r.voided_ml, (std::vector<double>{0, 30}));
+  EXPECT_EQ(r.infused_ml, (std::vector<double>{25, 300}));
+}
+
+// A European export: ';' between cells, decimal commas, units in brackets, and the ICS name
+// glossed in brackets after a plain one ("flow (Qura)").
+TEST(RecordingReader, SemicolonsDecimalCommasAndBracketedUnitsReadWithoutAColumnMap) {
+  const fs::path p = write_csv("reader-european",
+                               "Time (s);Pves (cmH2O);Pabd (cmH2O);Pdet (kPa);flow (Qura);"
+                               "voided volume (Vura);Vinf (ml)\n"
+                               "0;12,5;3,0;1;0;0;0\n"
+                               "1,5;13,5;4,5;0,5;2,5;1,25;40\n");
+  const vc::Recording r = vc::read_recording(p);
+  ASSERT_EQ(r.rows(), 2u);
+  EXPECT_EQ(r.time_s, (std::vector<double>{0, 1.5}));
+  EXPECT_EQ(r.pves_cmh2o, (std::vector<double>{12.5, 13.5}));
+  EXPECT_EQ(r.pabd_cmh2o, (std::vector<double>{3, 4.5}));
+  // 1 kPa = 1000 / (1000 kg/m3 * 9.80665 m/s2 * 0.01 m) cmH2O = 10.1972 cmH2O
+  EXPECT_NEAR(r.pdet_recorded_cmh2o[0], 10.1972, 1e-4);
+  EXPECT_NEAR(r.pdet_recorded_cmh2o[1], 5.0986, 1e-4);
+  EXPECT_EQ(r.flow_ml_s, (std::vector<double>{0, 2.5}));
+  EXPECT_EQ(r.voided_ml, (std::vector<double>{0, 1.25}));
+  EXPECT_EQ(r.infused_ml, (std::vector<double>{0, 40}));
+}
+
+// However many columns a file has, the one-line error keeps what to do about them.
+TEST(RecordingReader, MissingChannelErrorKeepsItsFixAfterALongHeader) {
+  std::string header = "time_s";
+  for (int i = 0; i < 40; ++i) header += ",channel_number_" + std::to_string(i);
+  std::string row = "0";
+  for (int i = 0; i < 40; ++i) row += ",1";
+  const auto m = error_of("reader-long-header", header + "\n" + row + "\n" + row + "\n");
+  EXPECT_NE(m.find("missing columns for pressure"), std::string::npos) << m;
+  EXPECT_NE(m.find("map one with --columns KEY=NAME"), std::string::npos) << m;
+  EXPECT_LE(m.size(), vesica::kMaxErrorLine);
+}

@@ -13,6 +13,7 @@
 #include "ToolEdits.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/io/LabelMap.h"
+#include "vesica/io/MshFile.h"
 #include "vesica/io/SlicerSegmentation.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
@@ -232,5 +233,13 @@ TEST(EditRoundTrip, AMeshRefinedInGmshIsWhatTheSimulationReads) {
   EXPECT_EQ(summary["triangles"].get<long>(), 4 * triangles);  // the refined wall
   const auto manifest = nlohmann::json::parse(slurp(w.out / ".vesica/simulate.manifest.json"));
   EXPECT_EQ(manifest["inputs"][0]["hash"], saved);
+  // The .vtu beside it, for ParaView, followed the edit: the refined mesh, node for node.
+  const io::VolumeMesh vtu = io::read_mesh_vtu(w.out / "bladder.vtu");
+  const io::MshFile msh = io::read_msh(w.out / "bladder.msh");
+  EXPECT_EQ(vtu.triangles.rows(), 4 * triangles);
+  EXPECT_EQ(vtu.triangles, msh.mesh.triangles);
+  ASSERT_EQ(vtu.nodes.rows(), msh.mesh.nodes.rows());
+  EXPECT_LT((vtu.nodes - msh.mesh.nodes).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_EQ(vtu.fiber1.rows(), vtu.triangles.rows());  // recomputed, as for a new mesh
   EXPECT_EQ(w.ran(), Ids{});
 }

@@ -129,6 +129,19 @@ TEST(RunnerProcess, TheRunningStagesOwnProgressShowsOnATerminalAndJsonStaysQuiet
   EXPECT_EQ(j["ran"], (Ids{"a", "b"}));
 }
 
+// A run whose stderr is a pipe (a CI log, `2>&1 | tee`) still shows what each stage is
+// doing: one whole line per step, no terminal redrawing.
+TEST(RunnerProcess, APipedRunLogsALinePerStepOfTheRunningStage) {
+  const fs::path dir = scratch_dir("runner-progress-piped");
+  const fs::path file = two_stages(dir, "label: B, progress_steps: 3");
+  const CommandResult piped = run_vesica("run " + quoted(file.string()), dir);
+  EXPECT_EQ(piped.exit_code, 0) << piped.out;
+  for (const char* step : {"  [b] step 1/3  33%", "  [b] step 2/3  67%", "step 3/3 100%"})
+    EXPECT_NE(piped.err.find(step), std::string::npos) << piped.err;
+  EXPECT_EQ(piped.err.find('\r'), std::string::npos) << piped.err;
+  EXPECT_EQ(piped.err.find("\033["), std::string::npos) << piped.err;
+}
+
 TEST(RunnerProcess, StatusExitsOneWhenSomethingWouldRunAndNamesTheFailure) {
   const fs::path dir = scratch_dir("runner-status-exit");
   const fs::path file = two_stages(dir, "label: B, fail: true");
@@ -166,4 +179,35 @@ TEST(RunnerProcess, AFileSavedByHandAfterItsStageFailedIsKept) {
   EXPECT_EQ(run_json(dir / "p.yaml", dir), Ids{"b"});
   EXPECT_EQ(slurp(dir / "out/b.txt"), "made by hand\nB\n");
   EXPECT_EQ(run_json(dir / "p.yaml", dir), Ids{});
+}
+
+TEST(RunnerProcess, AMistypedRunOptionIsAnsweredWithTheCloseMatch) {
+  const fs::path dir = scratch_dir("runner-did-you-mean");
+  const fs::path file = two_stages(dir, "label: B");
+  const CommandResult r = run_vesica("run --wokdir elsewhere " + quoted(file.string()), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("unknown option --wokdir (did you mean --workdir?)"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// A pipeline installed with vesica (<prefix>/share/vesica/pipelines beside <prefix>/bin)
+// writes under the folder it is run from, not into the installation.
+TEST(RunnerProcess, AnInstalledPipelineWritesUnderTheCurrentFolder) {
+  const fs::path dir = scratch_dir("runner-installed-workdir");
+  const fs::path prefix = dir / "prefix", here = dir / "here";
+  fs::create_directories(prefix / "bin");
+  fs::create_directories(here);
+  for (const char* exe : {"vesica", "vesica-teststage"})
+    fs::copy_file(bin_dir() / exe, prefix / "bin" / exe);
+  const fs::path installed = prefix / "share/vesica/pipelines";
+  fs::create_directories(installed);
+  const fs::path file = two_stages(installed, "label: B");
+  const CommandResult r =
+      run_command("cd " + quoted(here.string()) + " && " +
+                      quoted((prefix / "bin/vesica").string()) + " run " + quoted(file.string()),
+                  dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(here / "p" / "b.txt")) << r.err;  // ./<pipeline name>
+  EXPECT_FALSE(fs::exists(installed / "out"));
 }

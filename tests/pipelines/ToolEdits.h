@@ -5,7 +5,6 @@
 // .msh writer, which keeps physical groups and drops element data).
 #include <gtest/gtest.h>
 
-#include <gmsh.h>
 #include <vtkLinearSubdivisionFilter.h>
 #include <vtkNew.h>
 #include <vtkPLYReader.h>
@@ -13,6 +12,7 @@
 
 #include <filesystem>
 
+#include "GmshRefine.h"
 #include "vesica/io/LabelMap.h"
 #include "vesica/io/SurfaceFile.h"
 
@@ -66,17 +66,6 @@ inline long paint_in_slicer(const std::filesystem::path& label_map, int layers) 
   }
   io::write_label_map(m, label_map);
   return changed;
-}
-
-// Gmsh's Mesh > Refine by splitting, saved over the mesh: its physical groups stay, its
-// element data (thickness, fibers) do not.
-inline void refine_in_gmsh(const std::filesystem::path& msh) {
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::open(msh.string());
-  gmsh::model::mesh::refine();
-  gmsh::write(msh.string());
-  gmsh::finalize();
 }
 
 }  // namespace vesica::test

@@ -78,6 +78,20 @@ std::string describe_where(const WallStressField& f, const WallStressSummary& s)
   return buf;
 }
 
+// The smallest σ1 with at least `fraction` of the counted wall area at or below it;
+// `order` lists the counted triangles by increasing σ1.
+double area_percentile(const WallStressField& f, const std::vector<std::size_t>& order,
+                       double fraction) {
+  double total = 0.0;
+  for (std::size_t t : order) total += f.area_mm2[t];
+  double below = 0.0;
+  for (std::size_t t : order) {
+    below += f.area_mm2[t];
+    if (below >= fraction * total) return f.sigma1_kpa[t];
+  }
+  return f.sigma1_kpa[order.back()];
+}
+
 }  // namespace
 
 WallStressField wall_stress_field(const io::VtuGrid& g, const std::string& source) {
@@ -130,17 +144,9 @@ WallStressSummary summarize(const WallStressField& f) {
   if (order.empty()) return s;
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return f.sigma1_kpa[a] < f.sigma1_kpa[b]; });
-  double total = 0.0;
-  for (std::size_t t : order) total += f.area_mm2[t];
-  double below = 0.0;
-  s.p95_kpa = f.sigma1_kpa[order.back()];
-  for (std::size_t t : order) {
-    below += f.area_mm2[t];
-    if (below >= 0.95 * total) {
-      s.p95_kpa = f.sigma1_kpa[t];
-      break;
-    }
-  }
+  s.p2_kpa = area_percentile(f, order, 0.02);
+  s.p95_kpa = area_percentile(f, order, 0.95);
+  s.p98_kpa = area_percentile(f, order, 0.98);
   s.min_kpa = f.sigma1_kpa[order.front()];
   s.max_kpa = f.sigma1_kpa[order.back()];
   s.max_at_mm = centroid(f, static_cast<Eigen::Index>(order.back()));
@@ -159,7 +165,9 @@ nlohmann::json to_json(const WallStressSummary& s) {
                       {"unit", "kPa"},
                       {"triangles", s.triangles},
                       {"min_kpa", s.min_kpa},
+                      {"p2_kpa", s.p2_kpa},
                       {"p95_kpa", s.p95_kpa},
+                      {"p98_kpa", s.p98_kpa},
                       {"max_kpa", s.max_kpa},
                       {"max_at_mm", {s.max_at_mm.x(), s.max_at_mm.y(), s.max_at_mm.z()}},
                       {"max_from_outlet_mm", opt(s.max_from_outlet_mm)},

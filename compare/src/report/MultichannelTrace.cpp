@@ -187,7 +187,9 @@ std::string MultichannelTrace::render() const {
   o << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"plot trace\" id=\"" << xml_escape(id_)
     << "\" width=\"" << width_ << "\" height=\"" << height << "\" viewBox=\"0 0 " << width_ << ' '
     << height << "\" style=\"max-width:100%;height:auto\" font-family=\"sans-serif\" "
-    << "font-size=\"12\">\n<title>Multichannel urodynamic trace</title>\n<rect width=\"" << width_
+    << "font-size=\"12\" data-t-lo=\"" << num(t.lo) << "\" data-t-hi=\"" << num(t.hi)
+    << "\" data-x-lo=\"" << num(x_of(t, t.lo)) << "\" data-x-hi=\"" << num(x_of(t, t.hi))
+    << "\">\n<title>Multichannel urodynamic trace</title>\n<rect width=\"" << width_
     << "\" height=\"" << height << "\" fill=\"white\"/>\n";
   o << legend() << time_axis(t, panels_top, panels_bottom) << phase_rows(t, phases_top);
   double top = panels_top;
@@ -195,7 +197,10 @@ std::string MultichannelTrace::render() const {
     o << panel(p, t, top);
     top += kPanel + kGap;
   }
-  o << events(t, events_top, panels_bottom) << "</svg>\n";
+  // A cursor the page's 3-D view moves to the time of the frame it shows (hidden until then).
+  o << events(t, events_top, panels_bottom) << "<line id=\"" << xml_escape(id_)
+    << "-cursor\" x1=\"0\" x2=\"0\" y1=\"" << num(panels_top) << "\" y2=\"" << num(panels_bottom)
+    << "\" stroke=\"#d62728\" stroke-width=\"1.5\" visibility=\"hidden\"/>\n</svg>\n";
   return o.str();
 }
 

@@ -119,8 +119,9 @@ std::string wall_stress_section(const ReportInputs& in) {
          "anterior view\" src=\"data:image/png;base64," +
          base64(w.png) + "\"/><figcaption>" + xml_escape(w.message) +
          ": each triangle coloured by its maximum principal Cauchy stress &sigma;1 (viridis, "
-         "unshaded); the outlet cap (held fixed in the model) grey and left out of the "
-         "numbers.</figcaption></figure>\n" +
+         "unshaded, from the 2nd to the 98th percentile of the wall's area; the lowest 2 % "
+         "black, the highest 2 % pink); the outlet cap (held fixed in the model) grey and left "
+         "out of the numbers.</figcaption></figure>\n" +
          stress_table(w) + "</div>\n";
 }
 

@@ -36,6 +36,7 @@ svg.plot { display: block; }
   .plots { grid-template-columns: 1fr 1fr; }
   figure, table, .card, section.together { break-inside: avoid; }
   h2 { break-after: avoid; }
+  .wall3d { display: none; }  /* the static picture is the printed one */
 }
 </style>
 )";
@@ -68,6 +69,9 @@ std::string report_html(const ReportInputs& in) {
   o << section("Parameters", parameter_section(in), true);
   o << section("Obstruction and contractility", criteria_section(in), true);
   o << section("Wall stress at capacity", wall_stress_section(in), true);
+  if (in.wall_viewer)
+    o << section("The wall in 3-D, over filling and voiding",
+                 wall_viewer_section(*in.wall_viewer, in.three_js_dir), true);
   if (in.fluid_jet) o << section("The jet into the urethra (level 2)", fluid_jet_section(in), true);
   o << details_section(in);
   o << "<pre id=\"js-errors\" hidden></pre>\n</body></html>\n";

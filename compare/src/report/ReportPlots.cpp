@@ -1,5 +1,5 @@
-// The report's three plots: filling Pdet against volume (with the normal end-filling band
-// only over the volumes where it is defined), flow against time since the onset of flow,
+// The report's three plots: filling Pdet against volume (no reference band: none with a
+// published source was found), flow against time since the onset of flow,
 // and pressure-flow with axes sized to the data and the nomogram lines of the patient's sex.
 #include "report/ReportParts.h"
 #include "vesica/compare/analysis/ModelComparison.h"
@@ -28,8 +28,6 @@ Curve flagged_points(const RecordingAnalysis& a) {
 std::string filling_plot(const ReportInputs& in) {
   SvgPlot plot("Filling: Pdet against volume", "bladder volume (ml)", "Pdet (cmH2O)");
   plot.id("plot-filling").size(kWidth, kHeight).legend_below();
-  // docs/physics.md §7.3: normal end-filling Pdet 6-10 cmH2O, defined at 300-500 ml only
-  plot.add_box(300, 500, 6, 10, "normal end-filling Pdet (300-500 ml)");
   if (in.calibration)
     plot.add_vband(in.calibration->volume_lo_ml, in.calibration->volume_hi_ml, "fitted volumes",
                    "#cccccc");
@@ -122,9 +120,13 @@ std::string pressure_flow_plot(const ReportInputs& in) {
   if (in.measured) add_pressure_flow(plot, *in.measured, "measured", kMeasured, true);
   if (in.simulated) add_pressure_flow(plot, *in.simulated, "simulated", kSimulated, false);
   add_nomogram(plot, in.patient.sex);
-  const char* lines = in.patient.sex == Sex::male     ? " with the ICS nomogram lines for men."
-                      : in.patient.sex == Sex::female ? " with the BOOIf lines for women."
-                                                      : "; sex not stated, so no nomogram.";
+  // Each line's source, in short; the full references are under the criteria table.
+  const char* lines =
+      in.patient.sex == Sex::male
+          ? " with the ICS nomogram lines for men (Abrams, BJU Int 1999;84:14-15)."
+      : in.patient.sex == Sex::female
+          ? " with the BOOIf lines for women (Solomon et al., Neurourol Urodyn 2018;37:368-378)."
+          : "; sex not stated, so no nomogram.";
   std::string caption = std::string("Pdet against flow while voiding (unflagged rows)") + lines;
   if (in.simulated) caption += " Simulated: " + simulated_voiding_label(in) + ".";
   return figure(plot, caption);

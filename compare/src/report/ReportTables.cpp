@@ -1,5 +1,5 @@
-// The report's tables: ICS parameters measured against simulated with the normal range of
-// each, and the pressure-flow criteria of the patient's sex with their references.
+// The report's tables: ICS parameters measured against simulated, and the pressure-flow
+// criteria of the patient's sex with their normal classes and published references.
 #include <sstream>
 
 #include "report/ReportParts.h"
@@ -36,19 +36,6 @@ const Row kRows[] = {
     {"pdet_closing_cmh2o", "Pdet closing (cmH2O)", true},
 };
 
-// Normal values of docs/physics.md §5 and §7.3 (the project's reference values); empty
-// where none is stated.
-std::string normal_range(const std::string& key, Sex sex) {
-  if (key == "compliance_ml_per_cmh2o") return "&gt; 40";
-  if (key == "pdet_capacity_cmh2o") return "6&ndash;10 at 300&ndash;500 ml";
-  if (key == "qmax_ml_s") {
-    if (sex == Sex::female) return "&gt; 20";
-    if (sex == Sex::male) return "15&ndash;25";
-  }
-  if (key == "pdet_qmax_cmh2o" && sex == Sex::male) return "40&ndash;60";
-  return "";
-}
-
 std::string criteria_rows(const std::vector<Criterion>& m, const std::vector<Criterion>& s) {
   std::ostringstream o;
   const std::size_t n = std::max(m.size(), s.size());
@@ -74,7 +61,7 @@ std::string parameter_section(const ReportInputs& in) {
   const bool strain = simulated_void_is_straining(in);
   std::ostringstream o;
   o << "<table class=\"params\" id=\"parameters\"><tr><th>Parameter</th><th>Measured</th>"
-    << "<th>Simulated</th><th>Simulated &minus; measured</th><th>Normal</th></tr>\n";
+    << "<th>Simulated</th><th>Simulated &minus; measured</th></tr>\n";
   for (const Row& row : kRows) {
     const auto mv = m.value(row.key, nlohmann::json());
     const auto sv = s.value(row.key, nlohmann::json());
@@ -83,8 +70,7 @@ std::string parameter_section(const ReportInputs& in) {
     if (mv.is_number() && sv.is_number()) d = sv.get<double>() - mv.get<double>();
     const std::string mark = row.voiding_pressure && strain && sv.is_number() ? " &dagger;" : "";
     o << "<tr><td>" << xml_escape(row.label) << "</td><td>" << number(mv) << "</td><td>"
-      << number(sv) << mark << "</td><td>" << number(d) << "</td><td>"
-      << normal_range(row.key, in.patient.sex) << "</td></tr>\n";
+      << number(sv) << mark << "</td><td>" << number(d) << "</td></tr>\n";
   }
   o << "</table>\n";
   if (strain)
@@ -92,8 +78,10 @@ std::string parameter_section(const ReportInputs& in) {
          "bladder is squeezed from outside while the detrusor stays passive, so its voiding "
          "pressures are not a detrusor contraction's and differ from the measured ones in kind, "
          "not only in value.</p>\n";
-  o << "<p class=\"note\">Definitions: docs/compare.md (ICS terms). Normal values as in "
-       "docs/physics.md &sect;5, &sect;7.3; blank where none is stated.</p>\n";
+  // A reference range is shown only with its published source (the criteria table below);
+  // no source was found for the filling ranges once shown here, so none is given.
+  o << "<p class=\"note\">Definitions: docs/compare.md (ICS terms). Reference ranges are "
+       "given only where a published source is named: the pressure-flow criteria below.</p>\n";
   return o.str();
 }
 

@@ -29,7 +29,8 @@ bool is_ics_event(const std::string& label) {
 }
 
 struct Marker {
-  double t;  // s since the start of filling
+  double t;      // s since the start of filling: the trace's axis, both recordings aligned
+  double own_t;  // s on the recording's own clock, as its rows and the clinician's notes say
   std::string who, what, color;
   double volume_ml;
 };
@@ -37,7 +38,7 @@ struct Marker {
 std::string clock(double seconds) {
   char buf[48];
   const long s = std::lround(seconds);
-  std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, std::abs(s % 60));
+  std::snprintf(buf, sizeof buf, "%02ld:%02ld", s / 60, std::abs(s % 60));
   return buf;
 }
 
@@ -87,18 +88,19 @@ std::vector<Marker> markers(const ReportInputs& in, bool timed, double m_start, 
     const Recording& r = m->recording;
     for (std::size_t i = 0; i < r.rows() && !r.event.empty(); ++i)
       if (is_ics_event(r.event[i]))
-        out.push_back(
-            {r.time_s[i] - m_start, "measured", r.event[i], kMeasured, r.bladder_volume_ml(i)});
+        out.push_back({r.time_s[i] - m_start, r.time_s[i], "measured", r.event[i], kMeasured,
+                       r.bladder_volume_ml(i)});
   }
   if (const RecordingAnalysis* s = in.simulated) {
     const Recording& r = s->recording;
     const std::size_t c = s->ics.capacity_row;
-    out.push_back({r.time_s[c] - s_start, "simulated", "capacity, end of filling", kSimulated,
-                   r.bladder_volume_ml(c)});
+    out.push_back({r.time_s[c] - s_start, r.time_s[c], "simulated", "capacity, end of filling",
+                   kSimulated, r.bladder_volume_ml(c)});
     if (r.has_flow() && s->ics.qmax_ml_s) {
       const auto q = std::max_element(r.flow_ml_s.begin(), r.flow_ml_s.end()) - r.flow_ml_s.begin();
-      out.push_back({r.time_s[static_cast<std::size_t>(q)] - s_start, "simulated", "maximum flow",
-                     kSimulated, r.bladder_volume_ml(static_cast<std::size_t>(q))});
+      const auto row = static_cast<std::size_t>(q);
+      out.push_back({r.time_s[row] - s_start, r.time_s[row], "simulated", "maximum flow",
+                     kSimulated, r.bladder_volume_ml(row)});
     }
   }
   std::stable_sort(out.begin(), out.end(),
@@ -111,8 +113,8 @@ std::string marker_list(const std::vector<Marker>& list) {
   std::ostringstream o;
   o << "<ol class=\"events\">\n";
   for (const Marker& m : list)
-    o << "<li><span style=\"color:" << m.color << "\">" << m.who << "</span> " << clock(m.t) << " ("
-      << number(m.volume_ml) << " ml): " << xml_escape(m.what) << "</li>\n";
+    o << "<li><span style=\"color:" << m.color << "\">" << m.who << "</span> " << clock(m.own_t)
+      << " (" << number(m.volume_ml) << " ml): " << xml_escape(m.what) << "</li>\n";
   return o.str() + "</ol>\n";
 }
 
@@ -143,7 +145,7 @@ std::string trace_section(const ReportInputs& in) {
   o << "<figure class=\"wide\">" << trace.render()
     << "<figcaption>Both recordings against the time since their own start of filling "
        "(the measured one from its infusion extrapolated back to zero). Numbered "
-       "markers:"
+       "markers, with the time on each recording's own clock (mm:ss, as in its rows):"
     << (in.measured && !timed ? " The measured table has no time column and is not shown here."
                               : "")
     << "</figcaption>" << marker_list(list) << "</figure>\n";

@@ -75,6 +75,9 @@ vtkNew<vtkPolyData> wall_polydata(const WallStressField& f) {
   return poly;
 }
 
+constexpr std::array<double, 3> kBelowRange = {0.0, 0.0, 0.0};   // black
+constexpr std::array<double, 3> kAboveRange = {1.0, 0.35, 0.7};  // pink
+
 vtkNew<vtkLookupTable> viridis_table(const std::array<double, 2>& range) {
   vtkNew<vtkLookupTable> lut;
   lut->SetNumberOfTableValues(256);
@@ -86,6 +89,12 @@ vtkNew<vtkLookupTable> viridis_table(const std::array<double, 2>& range) {
   }
   const auto grey = viridis(std::nan(""));
   lut->SetNanColor(grey[0], grey[1], grey[2], 1.0);
+  // The tails beyond the 2nd and 98th percentiles in colours viridis never takes, so that
+  // a few extreme triangles are seen as such and do not flatten the rest into one colour.
+  lut->SetBelowRangeColor(kBelowRange[0], kBelowRange[1], kBelowRange[2], 1.0);
+  lut->UseBelowRangeColorOn();
+  lut->SetAboveRangeColor(kAboveRange[0], kAboveRange[1], kAboveRange[2], 1.0);
+  lut->UseAboveRangeColorOn();
   return lut;
 }
 
@@ -122,12 +131,19 @@ void add_patient_directions(vtkRenderer* r, const std::string& state) {
   r->AddActor2D(text("S", 0.5, 0.93, 26, VTK_TEXT_CENTERED));
   r->AddActor2D(text("I", 0.5, 0.04, 26, VTK_TEXT_CENTERED));
   r->AddActor2D(text("anterior view (from the front)", 0.03, 0.975, 16, VTK_TEXT_LEFT));
+  r->AddActor2D(text("pink: above the 98th percentile\nblack: below the 2nd", 0.03, 0.06, 14,
+                     VTK_TEXT_LEFT));
   if (!state.empty()) r->AddActor2D(text(state, 0.97, 0.975, 16, VTK_TEXT_RIGHT));
 }
 
-void add_outlet_label(vtkRenderer* r, const Eigen::Vector3d& outlet) {
+// Seen from the front, an outlet behind the wall's middle plane is hidden by the wall: the
+// label then says so rather than point at a colour that is not there.
+void add_outlet_label(vtkRenderer* r, const Eigen::Vector3d& outlet, vtkPolyData* poly) {
+  double b[6];
+  poly->GetBounds(b);
+  const bool hidden = outlet.y() > 0.5 * (b[2] + b[3]);  // y: posterior in LPS
   vtkNew<vtkCaptionActor2D> caption;
-  caption->SetCaption("outlet (grey)");
+  caption->SetCaption(hidden ? "outlet (grey, behind)" : "outlet (grey)");
   caption->SetAttachmentPoint(outlet.x(), outlet.y(), outlet.z());
   caption->BorderOff();
   caption->LeaderOn();
@@ -162,6 +178,9 @@ vtkNew<vtkRenderer> colour_bar(vtkLookupTable* lut) {
   bar->SetWidth(0.6);
   bar->SetHeight(0.7);
   bar->DrawNanAnnotationOff();
+  bar->DrawBelowRangeSwatchOn();
+  bar->DrawAboveRangeSwatchOn();
+  bar->DrawAnnotationsOff();  // the tails are named under the wall (add_patient_directions)
   r->AddActor2D(bar);
   r->AddActor2D(text("max principal\nCauchy stress\n(kPa)", 0.1, 0.88, 18, VTK_TEXT_LEFT));
   return r;
@@ -176,10 +195,17 @@ std::string state_line(const WallStressSummary& s) {
   return o.str();
 }
 
+// What the picture shows, from the frame's own numbers: the series frame nearest capacity
+// may be the first step of voiding, whose Pdet is no longer the table's Pdet at capacity.
+std::string frame_caption(const WallStressPicture& p) {
+  std::string line = state_line(p.summary);
+  return "the series frame nearest capacity (" + p.frame + (line.empty() ? "" : ": " + line) + ")";
+}
+
 }  // namespace
 
 std::array<double, 2> colour_bar_range(const WallStressSummary& s) {
-  double lo = s.min_kpa, hi = s.max_kpa;
+  double lo = s.p2_kpa, hi = s.p98_kpa;
   if (std::abs(lo) < 1e-6 * std::abs(hi)) lo = 0.0;
   if (!(hi - lo > 1e-9 * std::max(1.0, std::abs(hi)))) lo = hi - 1.0;
   return {lo, hi};
@@ -191,6 +217,7 @@ nlohmann::json picture_facts(const WallStressPicture& p) {
           {"unit", "kPa"},
           {"colour_map", "viridis"},
           {"colour_bar_kpa", {p.colour_bar_kpa[0], p.colour_bar_kpa[1]}},
+          {"colour_bar", "2nd to 98th area percentile of sigma1; below it black, above it pink"},
           {"view", "anterior: camera on -y (LPS), head up, patient right on the left"},
           {"outlet", "grey, left out of the numbers"},
           {"summary", to_json(p.summary)}};
@@ -247,7 +274,7 @@ void render_wall_stress_png(const fs::path& vtu, const fs::path& png, int width,
   model->AddActor(actor);
   look_from_front(model, poly);
   add_patient_directions(model, state_line(summary));
-  if (summary.outlet_mm) add_outlet_label(model, *summary.outlet_mm);
+  if (summary.outlet_mm) add_outlet_label(model, *summary.outlet_mm, poly);
   vtkNew<vtkRenderer> bar = colour_bar(lut);
 
   vtkNew<vtkRenderWindow> window;
@@ -266,6 +293,7 @@ void render_wall_stress_png(const fs::path& vtu, const fs::path& png, int width,
       {"unit", "kPa"},
       {"colour_map", "viridis"},
       {"colour_bar_kpa", {range[0], range[1]}},
+      {"colour_bar", "2nd to 98th area percentile of sigma1; below it black, above it pink"},
       {"view", "anterior: camera on -y (LPS), head up, patient right on the left"},
       {"outlet", "grey, left out of the numbers"},
       {"summary", to_json(summary)}};
@@ -320,7 +348,7 @@ WallStressPicture make_wall_stress_picture(const fs::path& vtu, const fs::path& 
     return pic;
   }
   pic.png = bytes;
-  pic.message = "wall at capacity from " + pic.frame;
+  pic.message = frame_caption(pic);
   return pic;
 }
 

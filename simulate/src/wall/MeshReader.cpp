@@ -5,12 +5,13 @@
 #include "wall/MeshSanity.h"
 
 #include "vesica/core/Error.h"
+#include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/MshFile.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
-#include "vesica/mesh/MembraneFields.h"
+#include "vesica/mesh/EditedMesh.h"
 #include "vesica/mesh/SurfaceReader.h"
 
 namespace vesica::simulate {
@@ -52,17 +53,39 @@ io::VolumeMesh read_mesh(const std::filesystem::path& path) {
 }
 
 // The mesh stage's thickness and fibers for a mesh whose file has none (a .msh saved by
-// Gmsh after an edit): the same function, with its default direction.
-void complete_membrane_fields(double default_thickness_m, io::VolumeMesh& m) {
-  mesh::SurfaceMesh surface{m.nodes, m.triangles, m.tri_region};
+// Gmsh after an edit), with its default direction; said in a warning naming the fields,
+// since the wall then has the default thickness everywhere.
+void fill_in_membrane_fields(double default_thickness_m, io::VolumeMesh& m,
+                             const std::string& file) {
   mesh::MembraneOptions options;
   options.thickness_mm = units::mm_from_m(default_thickness_m);
-  const mesh::MembraneFields fields = mesh::membrane_fields(surface, options);
-  if (m.thickness_mm.size() != m.triangles.rows()) m.thickness_mm = fields.thickness_mm;
-  if (m.fiber1.rows() != m.triangles.rows()) {
-    m.fiber1 = fields.fiber1;
-    m.fiber2 = fields.fiber2;
+  std::string filled;
+  for (const std::string& f : vesica::mesh::complete_membrane_fields(m, options))
+    filled += (filled.empty() ? "" : ", ") + f;
+  if (!filled.empty())
+    vesica::log()->warn(
+        "{}: has no {} (Gmsh drops them when it saves an edit): recomputed as "
+        "vesica-mesh does",
+        file, filled);
+}
+
+// vesica-mesh writes a .vtu beside its .msh for ParaView; after an edit in Gmsh that file
+// still shows the wall before the edit, and a ParaView user would be misled without a word.
+void warn_if_vtu_beside_is_stale(const std::filesystem::path& msh, const io::VolumeMesh& m) {
+  const std::filesystem::path vtu = io::vtu_beside(msh);
+  if (!std::filesystem::exists(vtu)) return;
+  bool same = false;
+  try {
+    const io::VtuGrid g = io::read_vtu(vtu);
+    same = g.triangles == m.triangles && g.points_mm.rows() == m.nodes.rows() &&
+           (g.points_mm - m.nodes).cwiseAbs().maxCoeff() < 1e-6;
+  } catch (const vesica::Error&) {
   }
+  if (!same)
+    vesica::log()->warn(
+        "{} is not the mesh of {} (edited since?): it shows the wall before "
+        "the edit; open the .msh in ParaView instead",
+        vtu.string(), msh.string());
 }
 
 // The compact node numbering of the simulation: points in the order the triangles first
@@ -114,7 +137,10 @@ WallModel read_wall(const std::filesystem::path& path, double default_thickness_
   if (m.triangles.rows() == 0)
     fail(path.string(), "contains no triangles", "the wall must be a triangle surface");
   detail::check_wall_surface(m, path.string());
-  if (source_of(path) == Source::Msh) complete_membrane_fields(default_thickness_m, m);
+  if (source_of(path) == Source::Msh) {
+    fill_in_membrane_fields(default_thickness_m, m, path.string());
+    warn_if_vtu_beside_is_stale(path, m);
+  }
   WallModel wall;
   const std::map<int, int> node_of = wall_numbering(m);
   wall.nodes.resize(node_of.size());

@@ -27,6 +27,11 @@ void add_common_options(CLI::App& app, CommonOptions& options);
 int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& options,
                    const std::function<int()>& body);
 
+// "unknown option --mu (did you mean --mu-kpa?)" for every unexpected long option left in
+// app after a parse that threw CLI11's ExtrasError; `fallback` (CLI11's own text) when the
+// extras are stray values only. Shared by the stage tools and the runner's commands.
+std::string unknown_options_message(const CLI::App& app, const std::string& fallback);
+
 // Manifest default: in the folder .vesica/ beside the report when one is given
 // (.vesica/<report stem>.manifest.json), else beside the main output
 // (.vesica/<output name>.manifest.json).

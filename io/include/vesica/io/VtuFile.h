@@ -1,13 +1,15 @@
 #pragma once
 // VTK XML unstructured grids (.vtu) of triangles and tetrahedra, in mm (field data
-// "units" = "mm"), written and read with VTK's own writer and reader.
+// "length_unit_m" = 0.001), written and read with VTK's own writer and reader, and readable
+// by meshio (no String arrays: its reader stops at them).
 //  - VtuGrid: any such grid with named point and cell arrays (the ParaView series,
 //    PvdSeries.h, and the mesh below);
 //  - the mesh file of vesica-mesh (beside its .msh): triangles then tetrahedra; cell data
 //    "region" (Int32, tetrahedra 10), "thickness_mm" (Float64, tetrahedra 0), "fiber1",
 //    "fiber2" (3-vectors, tetrahedra 0).
 // Field data (one tuple for the whole grid) holds numbers only, such as a series step's
-// "time_s", "volume_ml" and "pdet_cmh2o", besides the "units" string VTK readers check.
+// "time_s", "volume_ml" and "pdet_cmh2o", besides the unit (read_vtu checks it and leaves it
+// out of field_data; it also accepts the "units" = "mm" string of older files).
 #include <filesystem>
 #include <string>
 #include <vector>

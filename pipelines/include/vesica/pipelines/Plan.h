@@ -60,7 +60,8 @@ struct Plan {
 };
 
 struct PlanOptions {
-  std::filesystem::path workdir_override;  // empty: the file's `workdir`
+  std::filesystem::path workdir_override;  // empty: the file's `workdir`, or for a pipeline
+                                           // installed with vesica ./<pipeline name>
   std::filesystem::path bin_dir;           // where vesica-<tool> executables live
 };
 

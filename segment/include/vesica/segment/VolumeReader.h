@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "vesica/io/LabelMap.h"
 #include "vesica/segment/ImageTypes.h"
 
 namespace vesica::segment {
@@ -21,7 +22,8 @@ struct Volume {
 // `series` picks a series in a DICOM folder by key or UID (ignored for volume files).
 Volume read_volume(const std::filesystem::path& input, const std::string& series);
 
-// Writes a label map (format from the extension); used through write_atomically.
-void write_label(const LabelImage& label, const std::filesystem::path& path);
+// The label map as io writes it (io::write_label_map: NIfTI, NRRD, MetaImage, or a 3D Slicer
+// segmentation with its segment keys for .seg.nrrd); voxels 1 inside, 0 outside.
+io::LabelMap to_label_map(const LabelImage& label);
 
 }  // namespace vesica::segment

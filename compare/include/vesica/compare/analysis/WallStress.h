@@ -40,6 +40,7 @@ struct WallStressSummary {
   std::string array;
   std::size_t triangles = 0;  // counted (outlet left out)
   double min_kpa = 0, p95_kpa = 0, max_kpa = 0;
+  double p2_kpa = 0, p98_kpa = 0;  // the colour bar's range (WallStressPicture.h)
   Eigen::Vector3d max_at_mm = Eigen::Vector3d::Zero();  // centroid of the largest σ1
   std::optional<Eigen::Vector3d> outlet_mm;             // centroid of the outlet triangles
   std::optional<double> max_from_outlet_mm;             // distance of the maximum from it
@@ -47,7 +48,7 @@ struct WallStressSummary {
   std::optional<double> time_s, volume_ml, pdet_cmh2o;
 };
 
-// p95: the smallest σ1 below which at least 95 % of the counted wall area lies.
+// pN: the smallest σ1 below which at least N % of the counted wall area lies.
 WallStressSummary summarize(const WallStressField& field);
 nlohmann::json to_json(const WallStressSummary& s);
 

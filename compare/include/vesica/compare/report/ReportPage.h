@@ -5,6 +5,7 @@
 // pressure-flow plots, the parameter table with normal ranges, the sex-specific criteria,
 // the wall stress at capacity, then the model-against-measurement details. It fits a
 // 1280-px window and prints to A4 (report.pdf).
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -16,6 +17,7 @@
 #include "vesica/compare/calibration/CalibrationResult.h"
 #include "vesica/compare/report/FluidJetPicture.h"
 #include "vesica/compare/report/WallStressPicture.h"
+#include "vesica/compare/report/WallViewer.h"
 
 namespace vesica::compare {
 
@@ -33,6 +35,8 @@ struct ReportInputs {
   const CalibrationResult* calibration = nullptr;
   std::optional<WallStressPicture> wall_stress;  // none when no frame was available
   std::optional<FluidJetPicture> fluid_jet;      // level 2's jet at Qmax; none at level 1
+  std::optional<WallViewer> wall_viewer;         // the interactive wall; none without a series
+  std::filesystem::path three_js_dir;            // where three.min.js is inlined from
   const nlohmann::json* comparison = nullptr;    // compare_models(), or none
   PatientFacts patient;
   std::optional<SimulatedModel> model;  // of the simulated recording

@@ -4,7 +4,9 @@
 // WallStress.h) on the viridis map with unshaded colours, seen from the front (patient
 // right on the left, head up) with the patient directions written on the sides, the
 // outlet grey and labelled, and a colour bar titled with quantity and unit whose range is
-// the data's (minimum to maximum σ1 of the wall). The range is written into the PNG's text
+// robust: the 2nd to the 98th area percentile of σ1, the tails beyond it black and pink and
+// named on the bar, so that a few extreme triangles at the neck do not turn the rest of
+// the wall one colour. The range is written into the PNG's text
 // chunk "vesica:colour_bar_kpa"; with the view and the numbers of WallStressSummary it is
 // also the report's wall-stress.json (picture_facts), so that a reader can check the bar
 // against the frame.
@@ -30,7 +32,7 @@ struct WallStressPicture {
   std::string message;                     // why there is no picture, or what it shows
 };
 
-// The colour bar's range: the wall's smallest to largest σ1; a rounding residue of zero
+// The colour bar's range: the wall's 2nd to 98th area percentile of σ1; a rounding residue of zero
 // (an unloaded triangle at 1e-16 kPa) reads 0, and a uniform field gets a unit span.
 std::array<double, 2> colour_bar_range(const WallStressSummary& summary);
 
