@@ -8,6 +8,7 @@
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/Plan.h"
 #include "vesica/pipelines/StageTables.h"
+#include "vesica/simulate/ParameterCatalogue.h"
 
 namespace vesica::pipelines {
 namespace {
@@ -97,6 +98,8 @@ std::string parameter_reference_markdown(const std::string& only) {
         "`vesica validate` says so): " +
         missing + "; see their own pages.\n";
   }
+  // The physical parameters once, before the stage tables that take them.
+  if (only.empty()) md += simulate::catalogue_markdown();
   for (const auto& tool : tools) md += tool_section(*stage_table(tool));
   return md;
 }

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Units.h"
 
 namespace vesica::compare {

@@ -1,5 +1,7 @@
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 
+#include <nlohmann/json.hpp>
+
 namespace vesica::compare {
 
 RecordingAnalysis analyse(Recording recording, const ArtefactOptions& options,

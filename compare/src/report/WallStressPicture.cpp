@@ -36,6 +36,8 @@
 // VTK's render window and text classes come from object factories that must be
 // registered explicitly in a plain (non-vtk_module_autoinit) build.
 #include <vtkAutoInit.h>
+
+#include <nlohmann/json.hpp>
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
 VTK_MODULE_INIT(vtkRenderingFreeType);
 

@@ -1,7 +1,6 @@
 #include "protocol/Checkpoint.h"
 
 #include <csignal>
-#include <cstdlib>
 #include <sstream>
 
 #include "solver/StopRequest.h"
@@ -51,7 +50,6 @@ Checkpointer::Checkpointer(const RunOptions::Checkpoints& options)
   sigemptyset(&action.sa_mask);
   sigaction(SIGTERM, &action, &g_previous_term);
   sigaction(SIGINT, &action, &g_previous_int);
-  if (const char* k = std::getenv("VESICA_SIMULATE_STOP_AFTER_STEPS")) stop_after_ = std::atol(k);
   std::error_code ec;  // a new run's frames replace any earlier run's
   if (!options.resume) std::filesystem::remove_all(frames_folder(options), ec);
 }
@@ -107,8 +105,7 @@ Checkpointer::~Checkpointer() {
   sigaction(SIGINT, &g_previous_int, nullptr);
 }
 
-bool Checkpointer::due() {
-  if (++steps_ == stop_after_) std::raise(SIGTERM);
+bool Checkpointer::due() const {
   const double minutes =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() / 60.0;
   return stop_requested() || minutes >= options_.interval_min;

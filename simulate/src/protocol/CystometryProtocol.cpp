@@ -7,6 +7,8 @@
 #include <sstream>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "protocol/Checkpoint.h"
 #include "solver/StopRequest.h"
 #include "vesica/core/Log.h"
@@ -55,10 +57,6 @@ std::string no_drive_note(const ProtocolSettings& settings) {
   if (settings.drive == VoidingDrive::Straining && settings.straining_kpa <= 0.0)
     return "no voiding: the drive is straining but straining_kpa is 0";
   return "";
-}
-
-std::string drive_name(VoidingDrive drive) {
-  return drive == VoidingDrive::Detrusor ? "detrusor" : "straining";
 }
 
 // The progress line after a history row ("filling 120 ml") and the fraction of the
@@ -306,7 +304,7 @@ void CystometryProtocol::void_bladder() {
     } catch (const StepFailed& e) {
       // With the urethra open a model may go on as a simpler one (the wall's tail of
       // voiding on its sphere-equivalent); the same step is tried again on it.
-      if (urethra_open_ && model_->hand_over_voiding(e.what())) {
+      if (urethra_open_ && model_->hand_over_voiding(e.what(), time_)) {
         take_notes();
         continue;
       }

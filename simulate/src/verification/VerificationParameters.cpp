@@ -1,5 +1,5 @@
-// vesica-simulate's entries for the verification protocols (docs/physics.md §6), the
-// volumetric law (§2.3) and the FEBio export: see VerificationParameters.h.
+// vesica-simulate's entries for the verification protocols (docs/physics.md §6) and the
+// FEBio export: see VerificationParameters.h.
 #include "verification/VerificationParameters.h"
 
 #include "vesica/simulate/SimulateSettings.h"
@@ -7,9 +7,6 @@
 namespace vesica::simulate {
 
 void add_verification_entries(SimulateSettings& s, ParameterTable& t) {
-  t.number("beta_vol", s.beta_vol, "-", NumberRange::at_least(0).at_most(50),
-           "Ogden volumetric exponent beta (docs/physics.md §2.3); 0 = K/2 (ln J)^2, "
-           "FEBio's volumetric law");
   VerificationSettings& v = s.verification;
   t.choice("protocol", v.protocol, {"cystometry", "pressure-steps", "volume-steps"},
            "cystometry, or a verification: the closed wall as it is (no scaling), stepped by "

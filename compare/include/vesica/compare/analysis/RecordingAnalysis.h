@@ -3,7 +3,7 @@
 // (unflagged) filling curve Pdet(V).
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/IcsParameters.h"
 #include "vesica/compare/recording/Artefacts.h"
