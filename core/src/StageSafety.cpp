@@ -10,7 +10,8 @@ namespace {
 
 bool names_an_output(const CLI::Option& option) {
   for (const std::string& name : option.get_lnames())
-    if (name == "output" || name == "report" || name == "manifest" || name == "render-png")
+    if (name == "output" || name == "report" || name == "manifest" || name == "render-png" ||
+        name == "export-feb")
       return true;
   return false;
 }
