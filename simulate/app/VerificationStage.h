@@ -2,9 +2,11 @@
 // vesica-simulate's verification protocols and FEBio export as parts of the stage
 // (issue 25): kept beside main.cpp, which calls them through two hooks.
 #include <string>
+#include <vector>
 
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/SimulateSettings.h"
 #include "vesica/simulate/materials/Material.h"
 #include "vesica/simulate/wall/WallModel.h"
@@ -17,8 +19,14 @@ int run_verification_stage(const std::string& mesh, const std::string& output,
                            const MaterialSpec& spec, const SimulateSettings& settings,
                            StageRecord& record, const CommonOptions& common);
 
-// --export-feb FILE for a cystometry: the loaded wall with its filling as volumes.
+// --export-feb FILE for a cystometry (FebioExport.h), before it runs: refuses (usage) what
+// FEBio cannot express unless --febio-approximate, so that no run is spent on it.
+void check_febio_export(const SimulateSettings& settings, const MaterialSpec& spec);
+
+// After it ran: the stress-free wall and its settling and filling as FEBio 4 input,
+// warning about every approximation; nothing when no export is asked.
 void export_febio_if_asked(const SimulateSettings& settings, const WallModel& wall,
-                           const MaterialSpec& spec, StageRecord& record);
+                           const MaterialSpec& spec, const std::vector<io::HistoryRow>& history,
+                           StageRecord& record);
 
 }  // namespace vesica::simulate

@@ -85,8 +85,8 @@ int main(int argc, char** argv) {
       wall = load_wall(mesh, c.wall);
     }
     record.add_input(mesh);
-    export_febio_if_asked(c, wall, spec, record);  // issue 25
-    Progress progress("simulate");                 // silent with --json or off a terminal
+    check_febio_export(c, spec);    // before the run: what FEBio cannot express
+    Progress progress("simulate");  // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
@@ -132,8 +132,9 @@ int main(int argc, char** argv) {
       commit_staged_outputs();  // nothing was there: the partial results are the user's
       fail(mesh, result.failure, "results up to that point are in " + output);
     }
-    record.write("", default_manifest_path(common, output));  // .vesica/<folder>.manifest.json
-    std::error_code ec;                                       // a finished run needs no checkpoint
+    export_febio_if_asked(c, wall, spec, result.history, record);  // what ran, as FEBio input
+    record.write("", default_manifest_path(common, output));       // .vesica/<folder>.manifest.json
+    std::error_code ec;  // a finished run needs no checkpoint
     fs::remove_all(options.checkpoints.file.parent_path(), ec);
     if (!common.report.empty()) record.write(common.report, "");
     if (common.json) std::cout << record.summary().dump(2) << std::endl;
