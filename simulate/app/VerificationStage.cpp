@@ -45,6 +45,10 @@ FebioExportOptions export_options(const SimulateSettings& c, const ModelCard* cy
 
 void check_febio_export(const SimulateSettings& c, const MaterialSpec& spec) {
   if (c.export_feb.empty()) return;
+  if (is_verification(c.verification)) {  // a closed wall without surroundings
+    febio_approximations(resolve_material(spec), export_options(c, nullptr));
+    return;
+  }
   const ModelCard card = cystometry_card(c, spec);
   febio_approximations(card.material, export_options(c, &card));
 }
@@ -71,7 +75,6 @@ int run_verification_stage(const std::string& mesh, const std::string& output,
   }
   record.add_input(mesh);
   const MaterialCard material = resolve_material(spec);
-  if (!c.export_feb.empty()) febio_approximations(material, export_options(c, nullptr));
   VerificationResult result;
   {
     PhaseTimer timer(record, "simulate");

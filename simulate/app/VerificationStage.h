@@ -19,11 +19,11 @@ int run_verification_stage(const std::string& mesh, const std::string& output,
                            const MaterialSpec& spec, const SimulateSettings& settings,
                            StageRecord& record, const CommonOptions& common);
 
-// --export-feb FILE for a cystometry (FebioExport.h), before it runs: refuses (usage) what
-// FEBio cannot express unless --febio-approximate, so that no run is spent on it.
+// --export-feb FILE (FebioExport.h), before anything is read: refuses (usage) what FEBio
+// cannot express unless --febio-approximate, so that no run is spent on it.
 void check_febio_export(const SimulateSettings& settings, const MaterialSpec& spec);
 
-// After it ran: the stress-free wall and its settling and filling as FEBio 4 input,
+// After a cystometry ran: the stress-free wall and its settling and filling as FEBio 4 input,
 // warning about every approximation; nothing when no export is asked.
 void export_febio_if_asked(const SimulateSettings& settings, const WallModel& wall,
                            const MaterialSpec& spec, const std::vector<io::HistoryRow>& history,

@@ -74,6 +74,7 @@ int main(int argc, char** argv) {
     validate(p, options);  // before reading anything
     const MaterialSpec spec = material_spec(c.material);
     make_material(spec);                    // reject bad parameters before reading anything
+    check_febio_export(c, spec);            // and what FEBio cannot express
     if (is_verification(c.verification)) {  // issue 25: P–λ of a closed wall
       record.parameters() = table.values();
       record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
@@ -85,7 +86,6 @@ int main(int argc, char** argv) {
       wall = load_wall(mesh, c.wall);
     }
     record.add_input(mesh);
-    check_febio_export(c, spec);    // before the run: what FEBio cannot express
     Progress progress("simulate");  // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
