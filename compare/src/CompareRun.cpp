@@ -186,7 +186,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
       simulated = std::make_unique<RecordingAnalysis>(
           analyse(io::read_recording(o.simulated), no_artefacts()));
       keep_classes_of_sex(simulated->ics, in.patient.sex);
-      in.settings = read_simulation_settings(o.simulated);
+      in.model = read_simulated_model(o.simulated);
       record.add_input(o.simulated);
     }
   }
@@ -232,7 +232,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
             {"value", c.value ? nlohmann::json(*c.value) : nlohmann::json()},
             {"class", c.verdict},
             {"reference", c.reference}};
-  metrics["simulation_settings"] = in.settings ? to_json(*in.settings) : nlohmann::json();
+  metrics["simulated_model"] = in.model ? to_json(*in.model) : nlohmann::json();
   metrics["comparison"] = comparison;
   metrics["calibration"] = calibration ? to_json(*calibration) : nlohmann::json();
   metrics["wall_stress_picture"] =

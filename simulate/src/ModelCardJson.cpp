@@ -147,6 +147,7 @@ json reference_json(const ModelCard& c) {
           {"residual_ml", c.wall.residual_ml},
           {"image_pressure_cmh2o", c.protocol.image_pressure_cmh2o},
           {"volume_ml", c.reference_volume_ml},
+          {"mean_thickness_mm", c.mean_thickness_mm},
           {"thickness_mm", c.wall.thickness_mm},
           {"fixed_patch_radius_mm", c.wall.fixed_patch_radius_mm}};
 }
@@ -156,6 +157,7 @@ void reference_from(const Reader& r, ModelCard& c) {
   c.wall.residual_ml = r.number("residual_ml");
   c.protocol.image_pressure_cmh2o = r.number("image_pressure_cmh2o");
   c.reference_volume_ml = r.number("volume_ml");
+  c.mean_thickness_mm = r.number("mean_thickness_mm");
   c.wall.thickness_mm = r.number("thickness_mm");
   c.wall.fixed_patch_radius_mm = r.number("fixed_patch_radius_mm");
 }
@@ -315,12 +317,19 @@ json mesh_json(const MeshIdentity& m) {
           {"hash", m.hash},
           {"triangles", m.triangles},
           {"nodes", m.nodes},
-          {"tetrahedra", m.tetrahedra}};
+          {"tetrahedra", m.tetrahedra},
+          {"mean_edge_mm", m.mean_edge_mm}};
 }
 
 MeshIdentity mesh_from(const Reader& r) {
-  return {r.text("file"), r.text("hash"), r.integer("triangles"), r.integer("nodes"),
-          r.integer("tetrahedra")};
+  MeshIdentity m;
+  m.file = r.text("file");
+  m.hash = r.text("hash");
+  m.triangles = r.integer("triangles");
+  m.nodes = r.integer("nodes");
+  m.tetrahedra = r.integer("tetrahedra");
+  m.mean_edge_mm = r.number("mean_edge_mm");
+  return m;
 }
 
 }  // namespace

@@ -39,6 +39,7 @@ ModelCard unusual_card() {
   c.wall.fixed_patch_radius_mm = 7.0;
   c.wall.posture = Posture::Sitting;
   c.reference_volume_ml = 31.25;
+  c.mean_thickness_mm = 2.75;
   ProtocolSettings& p = c.protocol;
   p.start_ml = 40.0;
   p.capacity_ml = 420.0;
@@ -87,7 +88,7 @@ ModelCard unusual_card() {
   n.linear_solver = Level2LinearSolver::Direct;
   c.hand_overs = {{2, 1, 18.5, 140.25, "inverted tetrahedron"},
                   {1, 0, 6.0, 150.5, "no convergence"}};
-  c.mesh = {"bladder.vtu", "sha256:0123abcd", 2474, 1239, 9001};
+  c.mesh = {"bladder.vtu", "sha256:0123abcd", 2474, 1239, 9001, 6.5};
   return c;
 }
 
@@ -112,6 +113,7 @@ void expect_same(const ModelCard& a, const ModelCard& b) {
   EXPECT_EQ(a.wall.fixed_patch_radius_mm, b.wall.fixed_patch_radius_mm);
   EXPECT_EQ(a.wall.posture, b.wall.posture);
   EXPECT_EQ(a.reference_volume_ml, b.reference_volume_ml);
+  EXPECT_EQ(a.mean_thickness_mm, b.mean_thickness_mm);
   const ProtocolSettings &p = a.protocol, &q = b.protocol;
   EXPECT_EQ(p.start_ml, q.start_ml);
   EXPECT_EQ(p.capacity_ml, q.capacity_ml);
@@ -172,6 +174,7 @@ void expect_same(const ModelCard& a, const ModelCard& b) {
   EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
   EXPECT_EQ(a.mesh.nodes, b.mesh.nodes);
   EXPECT_EQ(a.mesh.tetrahedra, b.mesh.tetrahedra);
+  EXPECT_EQ(a.mesh.mean_edge_mm, b.mesh.mean_edge_mm);
 }
 
 }  // namespace

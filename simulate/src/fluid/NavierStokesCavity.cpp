@@ -258,11 +258,22 @@ void NavierStokesCavity::hand_over(const StepRequest& step, const std::string& f
   collapse_ = std::move(level1);
   collapse_time_s_ = step.end_time_s - step.dt_s;
   collapse_volume_ = V;
+  collapse_reason_ = failure;
   notes_.push_back("level 2 voided to " + std::to_string(units::ml_from_m3(V)) +
                    " ml, below the stress-free volume, where the slack wall folds into the "
                    "urine mesh (" +
                    failure + "); level 1 continued the voiding from there");
   vesica::log()->info("{}", notes_.back());
+}
+
+std::vector<LevelHandOver> NavierStokesCavity::hand_overs() const {
+  if (!collapse_) return {};
+  std::vector<LevelHandOver> list = {
+      {2, 1, units::ml_from_m3(collapse_volume_), collapse_time_s_,
+       "below the stress-free volume the slack wall folds into the urine mesh (" +
+           collapse_reason_ + ")"}};
+  for (LevelHandOver& h : collapse_->hand_overs()) list.push_back(std::move(h));
+  return list;
 }
 
 std::string NavierStokesCavity::voiding_end_note(const std::string& failure) const {

@@ -56,10 +56,6 @@ std::string no_drive_note(const ProtocolSettings& settings) {
   return "";
 }
 
-std::string drive_name(VoidingDrive drive) {
-  return drive == VoidingDrive::Detrusor ? "detrusor" : "straining";
-}
-
 // The progress line after a history row ("filling 120 ml") and the fraction of the
 // protocol done (filling up to 0.8, voiding after).
 std::pair<std::string, double> protocol_progress(const HistoryRow& row,
@@ -298,7 +294,7 @@ void CystometryProtocol::void_bladder() {
     } catch (const StepFailed& e) {
       // With the urethra open a model may go on as a simpler one (the wall's tail of
       // voiding on its sphere-equivalent); the same step is tried again on it.
-      if (urethra_open_ && model_->hand_over_voiding(e.what())) {
+      if (urethra_open_ && model_->hand_over_voiding(e.what(), time_)) {
         take_notes();
         continue;
       }

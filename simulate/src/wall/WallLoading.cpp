@@ -1,5 +1,6 @@
 #include "vesica/simulate/wall/WallLoading.h"
 
+#include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/wall/MeshReader.h"
@@ -20,6 +21,9 @@ WallModel load_wall(const std::filesystem::path& path, const WallOptions& option
   }
   const Eigen::Vector3d down = gravity_lps(options.posture).normalized();
   fix_regions(wall, down, units::m_from_mm(options.fixed_patch_radius_mm));
+  wall.source_file = path.string();
+  wall.source_hash = content_hash(path);
+  wall.options = options;
   return wall;
 }
 

@@ -88,6 +88,7 @@ struct MeshIdentity {
   long triangles = 0;
   long nodes = 0;
   long tetrahedra = 0;  // the urine's, level 2 only
+  double mean_edge_mm = 0.0;  // of the stress-free wall as it ran
 };
 
 struct ModelCard {
@@ -96,6 +97,7 @@ struct ModelCard {
   // image_pressure_cmh2o), the thickness where the mesh gives none, and the fixed patch.
   WallOptions wall;
   double reference_volume_ml = 0.0;  // the stress-free wall's enclosed volume as it ran
+  double mean_thickness_mm = 0.0;    // its thickness as it ran (the mesh's, else the option)
   // Filling, the surroundings, the voiding drive with its activation and the recorded
   // abdominal pressure, and the urethra's law.
   ProtocolSettings protocol;
@@ -114,6 +116,16 @@ const char* drive_name(VoidingDrive drive);
 // contraction, contractility 100 kPa", "abdominal straining 4 kPa (40.8 cmH2O)", or "none:
 // filling only".
 std::string voiding_drive_text(const ModelCard& card);
+// The card in words, one line per part, every number with its unit: the material, the
+// reference, the protocol, the voiding drive, the urethra, the level and its hand-overs, the
+// mesh (the history.csv header; the report and the study page say the same).
+std::vector<std::string> model_card_lines(const ModelCard& card);
+// The material's parameters as a reader writes them: "mu 1 kPa, K 1000 kPa, k1 0.06 kPa,
+// k2 0.045, Maxwell 0.2 / 10 s, contractility 100 kPa, ...".
+std::string material_text(const MaterialCard& material);
+// A hand-over as a reader says it: "level 1 -> 0 at 12.3 ml, t = 456 s: <reason>".
+std::string hand_over_text(const LevelHandOver& hand_over);
+
 // The urethra's law: "collapsible" (a lumen half open urethra_half_open_cmh2o above
 // closing) or "rigid" (the plain quadratic law).
 const char* urethra_law_name(const ProtocolSettings& protocol);

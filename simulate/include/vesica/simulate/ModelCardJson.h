@@ -5,12 +5,12 @@
 // Layout (format "vesica model card 1"):
 //   {"format", "material": {name, mu_pa, k_pa, beta_vol, fibers: {k1_pa, k2} | null,
 //    maxwell_branches: [{beta, tau_s}], muscle: {tone_pa, contractility_pa, ...}},
-//    "reference": {kind, residual_ml, image_pressure_cmh2o, volume_ml, thickness_mm,
-//    fixed_patch_radius_mm}, "protocol": {...filling and surroundings}, "voiding": {drive,
+//    "reference": {kind, residual_ml, image_pressure_cmh2o, volume_ml, mean_thickness_mm,
+//    thickness_mm, fixed_patch_radius_mm}, "protocol": {...filling and surroundings}, "voiding": {drive,
 //    straining_kpa, activation: {...}, abdominal_pressure: resting | recorded,
 //    recorded_pabd: {time_s, cmh2o}}, "urethra": {law, p_open_cmh2o, ...}, "level":
 //    {started, hand_overs: [{from, to, volume_ml, time_s, reason}]}, "numerics": {...},
-//    "mesh": {file, hash, triangles, nodes, tetrahedra}}
+//    "mesh": {file, hash, triangles, nodes, tetrahedra, mean_edge_mm}}
 // from_json refuses (vesica::Error naming the key) a card without a key it needs or with a
 // value of the wrong kind, so that a hand-edited card never runs half-read.
 #include <filesystem>

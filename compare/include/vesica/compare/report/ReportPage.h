@@ -12,7 +12,7 @@
 
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/analysis/SexSpecificCriteria.h"
-#include "vesica/compare/analysis/SimulationSettings.h"
+#include "vesica/compare/analysis/SimulatedModel.h"
 #include "vesica/compare/calibration/CalibrationResult.h"
 #include "vesica/compare/report/FluidJetPicture.h"
 #include "vesica/compare/report/WallStressPicture.h"
@@ -35,8 +35,8 @@ struct ReportInputs {
   std::optional<FluidJetPicture> fluid_jet;      // level 2's jet at Qmax; none at level 1
   const nlohmann::json* comparison = nullptr;    // compare_models(), or none
   PatientFacts patient;
-  std::optional<SimulationSettings> settings;  // of the simulated recording
-  std::string generated_utc;                   // when the report was made
+  std::optional<SimulatedModel> model;  // of the simulated recording
+  std::string generated_utc;            // when the report was made
 };
 
 std::string report_html(const ReportInputs& in);
