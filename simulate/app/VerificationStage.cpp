@@ -17,8 +17,8 @@ namespace fs = std::filesystem;
 namespace vesica::simulate {
 namespace {
 
-// The card of a cystometry as the export reads it: the material resolved as it will run,
-// the wall's reference, the protocol and the numerics.
+// The card of a cystometry before its wall is read, as far as the export's checks need it:
+// the material resolved as it will run, the wall's reference, the protocol and numerics.
 ModelCard cystometry_card(const SimulateSettings& c, const MaterialSpec& spec) {
   ModelCard card;
   card.material = resolve_material(spec);
@@ -54,14 +54,14 @@ void check_febio_export(const SimulateSettings& c, const MaterialSpec& spec) {
 }
 
 void export_febio_if_asked(const SimulateSettings& c, const WallModel& wall,
-                           const MaterialSpec& spec, const std::vector<io::HistoryRow>& history,
-                           StageRecord& record) {
+                           const CystometryResult& result, StageRecord& record) {
   if (c.export_feb.empty()) return;
-  const ModelCard card = cystometry_card(c, spec);
-  report_approximations(write_febio(c.export_feb, wall, card.material,
-                                    febio_filling_history(history, card.protocol, card.material),
-                                    export_options(c, &card)),
-                        record);
+  const ModelCard& card = result.card;  // what ran
+  report_approximations(
+      write_febio(c.export_feb, wall, card.material,
+                  febio_filling_history(result.history, card.protocol, card.material),
+                  export_options(c, &card)),
+      record);
   record.add_output(c.export_feb);
 }
 

@@ -2,13 +2,12 @@
 // vesica-simulate's verification protocols and FEBio export as parts of the stage
 // (issue 25): kept beside main.cpp, which calls them through two hooks.
 #include <string>
-#include <vector>
 
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
-#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/SimulateSettings.h"
 #include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/wall/WallModel.h"
 
 namespace vesica::simulate {
@@ -24,9 +23,8 @@ int run_verification_stage(const std::string& mesh, const std::string& output,
 void check_febio_export(const SimulateSettings& settings, const MaterialSpec& spec);
 
 // After a cystometry ran: the stress-free wall and its settling and filling as FEBio 4 input,
-// warning about every approximation; nothing when no export is asked.
+// from the run's own card; warns about every approximation; nothing when no export is asked.
 void export_febio_if_asked(const SimulateSettings& settings, const WallModel& wall,
-                           const MaterialSpec& spec, const std::vector<io::HistoryRow>& history,
-                           StageRecord& record);
+                           const CystometryResult& result, StageRecord& record);
 
 }  // namespace vesica::simulate

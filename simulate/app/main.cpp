@@ -143,9 +143,9 @@ int main(int argc, char** argv) {
       commit_staged_outputs();  // nothing was there: the partial results are the user's
       fail(mesh, result.failure, "results up to that point are in " + output);
     }
-    export_febio_if_asked(c, wall, spec, result.history, record);  // what ran, as FEBio input
-    record.write("", default_manifest_path(common, output));       // .vesica/<folder>.manifest.json
-    std::error_code ec;  // a finished run needs no checkpoint
+    export_febio_if_asked(c, wall, result, record);           // what ran, as FEBio input
+    record.write("", default_manifest_path(common, output));  // .vesica/<folder>.manifest.json
+    std::error_code ec;                                       // a finished run needs no checkpoint
     fs::remove_all(options.checkpoints.file.parent_path(), ec);
     if (!common.report.empty()) record.write(common.report, "");
     if (common.json) std::cout << record.summary().dump(2) << std::endl;
