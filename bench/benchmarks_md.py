@@ -227,6 +227,14 @@ def verification(runs):
     return f"{runs[0].get('triangles'):,} triangles, 20 pressure steps", measured, None, details
 
 
+def febio(d):
+    return (f"{num(d.get('triangles'))} triangles, {num(d.get('equations'))} FEBio equations",
+            d.get("febio_wall_s"), None,
+            join(f"vesica {seconds(d.get('vesica_s'))}",
+                 f"FEBio {num(d.get('iterations'))} iterations, {num(d.get('nonzeros'))} skyline nonzeros",
+                 f"FEBio's pressure within {num(d.get('febio_vs_vesica_pct'))} % of vesica's at equal volume"))
+
+
 def pressure_steps_of(triangles):
     return lambda d: [r for r in d.get("pressure_steps", []) if r.get("triangles") == triangles] or None
 
@@ -313,6 +321,8 @@ CASES = [
     ("pipelines", "demo", "vesica run: no-op of the finished demo", pipelines_demo, False),
     ("study", None, "vesica run: neobladder what-if study from nothing", study, True),
     ("safety", None, "safety: hostile inputs refused (slowest refusal)", safety, True),
+    ("febio", "balloon", "FEBio 4 on the exported thin balloon (8 pressure steps, OMP 2, niced)", febio, False),
+    ("febio", "default_wall", "FEBio 4 on the exported default wall's filling 50 → 350 ml (OMP 2, niced)", febio, False),
 ]
 for _triangles in (2312, 9800, 39200):
     CASES.append(("verification", pressure_steps_of(_triangles),

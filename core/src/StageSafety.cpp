@@ -16,7 +16,8 @@ namespace {
 bool names_an_output(const CLI::Option& option) {
   if (option.get_group() == kOutputOptionGroup) return true;
   for (const std::string& name : option.get_lnames())
-    if (name == "output" || name == "report" || name == "manifest" || name == "render-png")
+    if (name == "output" || name == "report" || name == "manifest" || name == "render-png" ||
+        name == "export-feb")
       return true;
   return false;
 }

@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
     validate(p, options);  // before reading anything
     const MaterialSpec spec = card ? material_spec(card->material) : material_spec(c.material);
     make_material(spec);                    // reject bad parameters before reading anything
+    check_febio_export(c, spec);            // and what FEBio cannot express
     if (is_verification(c.verification)) {  // issue 25: P–λ of a closed wall
       record.parameters() = table.values();
       record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
@@ -93,8 +94,7 @@ int main(int argc, char** argv) {
     }
     if (card) check_card_mesh(*card, wall);
     record.add_input(mesh);
-    export_febio_if_asked(c, wall, spec, record);  // issue 25
-    Progress progress("simulate");                 // silent with --json or off a terminal
+    Progress progress("simulate");  // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
@@ -143,6 +143,7 @@ int main(int argc, char** argv) {
       commit_staged_outputs();  // nothing was there: the partial results are the user's
       fail(mesh, result.failure, "results up to that point are in " + output);
     }
+    export_febio_if_asked(c, wall, result, record);           // what ran, as FEBio input
     record.write("", default_manifest_path(common, output));  // .vesica/<folder>.manifest.json
     std::error_code ec;                                       // a finished run needs no checkpoint
     fs::remove_all(options.checkpoints.file.parent_path(), ec);

@@ -18,7 +18,11 @@ void add_verification_entries(SimulateSettings& s, ParameterTable& t) {
   t.number("max_stretch", v.max_stretch, "-", NumberRange::greater_than(1).at_most(10),
            "volume-steps: the last stretch (V/V0)^(1/3)");
   t.output_file("export_feb", s.export_feb, "FILE.feb",
-                "also write the wall problem as an FEBio 4 input (README, FEBio)");
+                "after the run, also write what ran as an FEBio 4 input: the wall, its material "
+                "and the pressures vesica computed (docs/simulate.md, FEBio)");
+  t.flag("febio_approximate", s.febio_approximate,
+         "export_feb: write FEBio's nearest law, with a warning, where FEBio has none equal to "
+         "vesica's (else an error naming the parameter)");
 }
 
 }  // namespace vesica::simulate

@@ -22,7 +22,8 @@ void ignore_file_size_signal();
 void refuse_special_inputs(const CLI::App& app);
 
 // Every value of every option of `app` (positional ones included) that names an existing
-// file or folder, except the options -o/--output, --report and --manifest.
+// file or folder, except the options -o/--output, --report, --manifest, --render-png and
+// --export-feb.
 void protect_command_line_inputs(const CLI::App& app);
 
 }  // namespace vesica

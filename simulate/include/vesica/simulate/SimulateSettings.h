@@ -44,6 +44,8 @@ struct SimulateSettings {
   // Issue 25: the verification protocols and the FEBio export.
   VerificationSettings verification;
   std::string export_feb;  // empty = none
+  // FEBio's nearest law, with a warning, where it has none equal to vesica's (FebioExport.h).
+  bool febio_approximate = false;
 };
 
 }  // namespace vesica::simulate
