@@ -19,7 +19,7 @@ shared="${VESICA_SHARED_DIR:-$here/../shared}"
 # The detrusor-voided default wall: its fibers from filling first, then its contractility,
 # the drive's latency, the sphincter's recovery and the urethra's closing pressure from voiding
 # (docs/compare.md).
-calibrate="${VESICA_BENCH_CALIBRATE:-k1,k2,detrusor,activation_delay,urethra_recovery,p_close}"
+calibrate="${VESICA_BENCH_CALIBRATE:-k1,k2,contractility,activation_delay,urethra_recovery_half,p_close}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -81,7 +81,8 @@ PY
 fi
 if [ -n "${VESICA_BENCH_WALL:-}" ] && [ -f "$VESICA_BENCH_WALL" ]; then
   if cal_s=$(seconds "$exe" --measured "$data/normal-female-34y.csv" --mesh "$VESICA_BENCH_WALL" \
-      --calibrate mu --fit-volume-ml 50,350 -o "$work/cal" --report "$work/cal.json"); then
+      --calibrate mu --fit-volume-ml 50,350 --material neo-hookean --residual-ml 50 \
+      -o "$work/cal" --report "$work/cal.json"); then
     cal_json=$(python3 -c "import json,sys; s=json.load(open('$work/cal.json')); \
 print(json.dumps({'seconds': $cal_s, 'fitted_mu_kpa': s.get('fitted_mu'), \
 'fit_rmse_cmh2o': s.get('fit_rmse_cmh2o')}))")

@@ -227,6 +227,14 @@ def verification(runs):
     return f"{runs[0].get('triangles'):,} triangles, 20 pressure steps", measured, None, details
 
 
+def febio(d):
+    return (f"{num(d.get('triangles'))} triangles, {num(d.get('equations'))} FEBio equations",
+            d.get("febio_wall_s"), None,
+            join(f"vesica {seconds(d.get('vesica_s'))}",
+                 f"FEBio {num(d.get('iterations'))} iterations, {num(d.get('nonzeros'))} skyline nonzeros",
+                 f"FEBio's pressure within {num(d.get('febio_vs_vesica_pct'))} % of vesica's at equal volume"))
+
+
 def pressure_steps_of(triangles):
     return lambda d: [r for r in d.get("pressure_steps", []) if r.get("triangles") == triangles] or None
 
@@ -271,6 +279,19 @@ def build_make_test(d):
 def build_incremental(d):
     inc = d.get("incremental_test_simulate") or {}
     return (inc.get("touched", ""), inc.get("wall_s"), 60, cpu_and_load(inc))
+def safety(d):
+    cases = d.get("refusals") or []
+    slowest = max((c.get("seconds") or 0 for c in cases), default=None)
+    peak = max((c.get("peak_rss_mb") or 0 for c in cases), default=None)
+    long = d.get("long_recording") or {}
+    stop = d.get("stop") or {}
+    return (f"{len(cases)} hostile inputs, up to 100 MB", slowest, 5,
+            join(f"largest peak RSS {num(peak)} MB",
+                 f"every refusal one line within 5 s and 1 GB: {num(d.get('within_limits'))}",
+                 f"{num(long.get('rows'))}-row recording accepted in {seconds(long.get('seconds'))}, "
+                 f"{num(long.get('peak_rss_mb'))} MB, page {num(long.get('page_mb'))} MB",
+                 f"SIGTERM on a {num(stop.get('triangles'))}-triangle wall: stopped after "
+                 f"{seconds(stop.get('exit_after_s'))}, checkpoint {num(stop.get('checkpoint'))}"))
 
 
 CASES = [
@@ -299,6 +320,9 @@ CASES = [
     ("pipelines", None, "vesica run: no-op of a fresh 6-stage chain", pipelines_noop, True),
     ("pipelines", "demo", "vesica run: no-op of the finished demo", pipelines_demo, False),
     ("study", None, "vesica run: neobladder what-if study from nothing", study, True),
+    ("safety", None, "safety: hostile inputs refused (slowest refusal)", safety, True),
+    ("febio", "balloon", "FEBio 4 on the exported thin balloon (8 pressure steps, OMP 2, niced)", febio, False),
+    ("febio", "default_wall", "FEBio 4 on the exported default wall's filling 50 → 350 ml (OMP 2, niced)", febio, False),
 ]
 for _triangles in (2312, 9800, 39200):
     CASES.append(("verification", pressure_steps_of(_triangles),

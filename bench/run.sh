@@ -6,7 +6,7 @@
 #
 # Usage: bench/run.sh [BUILD] [NAME...]
 #   NAME: the part after bench_ (segment, surface, mesh, simulate, simulate_level2,
-#         compare, pipelines, study, verification, build); none = all.
+#         compare, pipelines, study, verification, build, safety); none = all.
 #   VESICA_BENCH_SKIP="simulate_level2 study"  leaves those out;
 #   VESICA_BENCH_KEEP=1  keeps the JSON of benchmarks not run now (their rows keep their
 #                        own date and commit); by default the table is this run only, and a

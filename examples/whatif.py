@@ -10,7 +10,7 @@ import tempfile
 import vesica
 
 bin_dir = sys.argv[1] if len(sys.argv) > 1 else "build/bin"
-wall_law = {"name": "neo-hookean", "mu": 1e3, "K_per_mu": 1000.0}  # ileum: mu 1 kPa (SI)
+wall_law = {"material": "neo-hookean", "mu_kpa": 1}  # the thesis's ileum: mu 1 kPa, K = 1000 mu
 protocol = {"capacity_ml": 300, "fill_rate_ml_min": 50, "no_void": True}
 with tempfile.TemporaryDirectory() as work:
     for elongation in (1.0, 1.5, 2.5):  # left-right length ratio of the pouch

@@ -7,8 +7,9 @@
 // constant and straight-line baselines of the measured curve for scale.
 // Usage: fit_bladder_wall WALL.vtu RECORDING.csv [--level 0|1] [--fit mu,k1,k2]
 //          [--start mu,k1,k2] [--k2 K2] [--end-filling-cmh2o P]
-//   --fit: the parameters fitted (of mu, k1, k2); --start their start values (mu in kPa, k1
-//   in Pa, as compare's calibration reports them); --k2: k2 held at this value.
+//   --fit: the parameters fitted (of mu, k1, k2); --start their start values (mu and k1 in
+//   kPa, the catalogue's units, as compare's calibration reports them); --k2: k2 held at
+//   this value.
 //   --end-filling-cmh2o: instead, the least-squares (mu, k1, k2) whose Pdet at capacity is
 //   P and that does not fall from 80 ml on (a grid over mu and k2, k1 from the constraint
 //   by bisection), for a default that ends filling inside the normal band
@@ -198,7 +199,7 @@ int main(int argc, char** argv) try {
   int level = 1;
   double end_filling = -1.0;
   std::vector<std::string> names = {"mu", "k1", "k2"};
-  std::map<std::string, double> start = {{"mu", 1.0}, {"k1", 100.0}, {"k2", 0.03}};
+  std::map<std::string, double> start = {{"mu", 1.0}, {"k1", 0.1}, {"k2", 0.03}};
   std::map<std::string, double> held;  // material parameters (SI) not fitted
   for (int a = 3; a + 1 < argc; a += 2) {
     const std::string option = argv[a];

@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/CompareRun.h"
 #include "vesica/compare/analysis/WallStress.h"

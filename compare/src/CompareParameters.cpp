@@ -1,5 +1,8 @@
 #include "vesica/compare/CompareParameters.h"
 
+#include "vesica/simulate/ParameterCatalogue.h"
+#include "vesica/simulate/SimulateParameters.h"
+
 namespace vesica::compare {
 namespace {
 
@@ -14,29 +17,24 @@ std::vector<double> volume_range_from_text(const std::string& text) {
   return v;
 }
 
+// "mu[,k,k1,...]": the catalogue's parameters a calibration fits.
+std::string fitted_names() {
+  std::vector<std::string> names;
+  for (const simulate::PhysicalParameter& p : simulate::parameter_catalogue())
+    if (p.fitted()) names.push_back(p.name);
+  std::string text = names.front() + "[";
+  for (std::size_t i = 1; i < names.size(); ++i) text += "," + names[i];
+  return text + "]";
+}
+
 void add_calibration_entries(CompareOptions& o, ParameterTable& t) {
   CalibrationModel& m = o.simulation;
-  t.text("calibrate", o.calibrate,
-         "mu[,k,beta,tau,k1,k2,p_open,r1,r2,detrusor,straining,activation_delay,activation_onset,"
-         "activation_fade,p_close,urethra_recovery]",
-         "fit these parameters to the measured recording: filling Pdet(V), and with a voiding "
-         "parameter also flow, Pdet and voided volume while voiding (needs the mesh input)");
-  t.number("mu_kpa", m.mu_kpa, "kPa",
-           NumberRange::at_least(0.1).at_most(100).because("the calibration searches mu there"),
-           "shear modulus of the wall the calibration starts from");
-  t.number_or_word("k_kpa", m.k_kpa, 0.0, "kPa",
-                   NumberRange::at_least(0.1).at_most(1e6).or_word("auto", "1000 mu, following mu"),
-                   "bulk modulus of the wall in the calibration");
-  t.number("thickness_mm", m.thickness_mm, "mm", NumberRange::at_least(0.1).at_most(30),
-           "wall thickness in the calibration");
-  t.number("start_ml", m.start_ml, "ml", NumberRange::greater_than(0).at_most(5000),
-           "volume the calibration's simulations start from");
-  t.number("straining_kpa", m.straining_kpa, "kPa", NumberRange::at_least(0).at_most(20),
-           "abdominal straining that voids the calibration's model (0: the simulation's "
-           "default); the start value when straining is fitted");
-  t.number("detrusor_kpa", m.detrusor_kpa, "kPa", NumberRange::at_least(0).at_most(500),
-           "detrusor contraction that voids the calibration's model (0: the simulation's "
-           "default); the start value when detrusor is fitted");
+  t.text("calibrate", o.calibrate, fitted_names(),
+         "fit these parameters (docs/parameters.md, the catalogue's names) of the model the "
+         "options below describe to the measured recording: filling Pdet(V), and with a "
+         "voiding parameter also flow, Pdet and voided volume while voiding (needs the mesh "
+         "input)");
+  simulate::add_model_entries(m.model, t);
   t.integer("max_simulations", o.max_simulations, "-",
             NumberRange::at_least(1).at_most(1000).because("each is a full simulation"),
             "calibration budget of the mesh's simulations (its Jacobian included)");

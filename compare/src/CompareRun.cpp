@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/analysis/ModelComparison.h"
 #include "vesica/compare/analysis/WallStress.h"
@@ -22,6 +24,7 @@
 #include "vesica/core/Log.h"
 #include "vesica/core/StageRecord.h"
 #include "vesica/io/RecordingReader.h"
+#include "vesica/simulate/ModelCardJson.h"
 
 namespace vesica::compare {
 namespace {
@@ -99,6 +102,7 @@ nlohmann::json summary_numbers(const RecordingAnalysis* m, const RecordingAnalys
     j[c.key + "_class"] = c.verdict;
   }
   j["artefact_rows"] = a->flags.size();
+  j["plausibility_warnings"] = a->warnings.size();
   if (!comparison.is_null()) j["pdet_rmse_cmh2o"] = comparison["filling_pdet"]["rmse_cmh2o"];
   if (cal) {
     for (const auto& fp : cal->parameters) j["fitted_" + fp.name] = fp.value;
@@ -142,6 +146,8 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
                   StageRecord& record) {
   const fs::path out(o.output);
   const bool picture = in.wall_stress && !in.wall_stress->png.empty();
+  // The fitted model, for `vesica-simulate --model-card model.json`.
+  const auto& fitted_card = in.calibration ? in.calibration->fitted_card : std::nullopt;
   // One folder, replaced whole: never a new metrics.json beside an old index.html or PDF.
   write_atomically(out, [&](const fs::path& tmp) {
     if (picture) {
@@ -150,6 +156,8 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
                             picture_facts(*in.wall_stress).dump(2) + "\n");
     }
     write_text_atomically(tmp / "index.html", report_html(in));
+    if (fitted_card)
+      write_text_atomically(tmp / "model.json", simulate::model_card_text(*fitted_card));
     if (o.no_pdf) {
       metrics["pdf"] = {{"written", false}, {"why", "--no-pdf"}};
     } else {
@@ -164,6 +172,7 @@ void write_report(const CompareOptions& o, ReportInputs& in, nlohmann::json& met
     record.add_output(out / "wall-stress.json");
   }
   record.add_output(out / "index.html");
+  if (fitted_card) record.add_output(out / "model.json");
   if (metrics["pdf"]["written"].get<bool>()) record.add_output(out / "report.pdf");
   record.add_output(out / "metrics.json");
 }
@@ -174,8 +183,11 @@ RecordingAnalysis analyse_measured(const CompareOptions& o) {
   io::ReaderOptions reader;
   reader.columns = io::parse_column_map(o.columns);
   reader.pressure_unit = o.pressure_unit;
-  return analyse(io::read_recording(o.measured, reader), o.artefacts,
-                 RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
+  RecordingAnalysis a = analyse_checked(io::read_recording(o.measured, reader), o.artefacts,
+                                        RecordingFacts{o.fill_rate_ml_min, o.capacity_ml});
+  for (const auto& w : a.warnings)
+    log()->warn("{}: {} (plausibility rule {})", o.measured, w.message, w.rule);
+  return a;
 }
 
 ComparisonOptions comparison_options(const CompareOptions& o) {
@@ -203,7 +215,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
       simulated = std::make_unique<RecordingAnalysis>(
           analyse(io::read_recording(o.simulated), no_artefacts()));
       keep_classes_of_sex(simulated->ics, in.patient.sex);
-      in.settings = read_simulation_settings(o.simulated);
+      in.model = read_simulated_model(o.simulated);
       record.add_input(o.simulated);
     }
   }
@@ -251,7 +263,7 @@ int run_compare(const CompareOptions& o, const CommonOptions& common, int argc, 
             {"value", c.value ? nlohmann::json(*c.value) : nlohmann::json()},
             {"class", c.verdict},
             {"reference", c.reference}};
-  metrics["simulation_settings"] = in.settings ? to_json(*in.settings) : nlohmann::json();
+  metrics["simulated_model"] = in.model ? to_json(*in.model) : nlohmann::json();
   metrics["comparison"] = comparison;
   metrics["calibration"] = calibration ? to_json(*calibration) : nlohmann::json();
   metrics["wall_stress_picture"] =

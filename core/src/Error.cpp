@@ -1,12 +1,14 @@
 #include "vesica/core/Error.h"
 
+#include "vesica/core/UidScrub.h"
+
 namespace vesica {
 namespace {
 
 std::string one_line(const std::string& file, const std::string& problem, const std::string& hint) {
   std::string s = file.empty() ? problem : file + ": " + problem;
   if (!hint.empty()) s += " (" + hint + ")";
-  return single_line(s);
+  return single_line(without_uids(s));
 }
 
 bool utf8_continuation(char c) {

@@ -69,4 +69,30 @@ void check_written(const fs::path& written, const fs::path& target) {
   check_free_space(written.parent_path().empty() ? fs::path(".") : written.parent_path(), target);
 }
 
+void check_room(const fs::path& folder, std::uintmax_t total_bytes,
+                std::uintmax_t largest_file_bytes, const fs::path& target) {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_FSIZE, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      largest_file_bytes >= limit.rlim_cur)
+    fail(target.string(), "cannot be written: a file of it needs " +
+                              std::to_string(largest_file_bytes) +
+                              " bytes, above the file-size "
+                              "limit of " +
+                              std::to_string(limit.rlim_cur) + " (ulimit -f)");
+  fs::path existing = fs::absolute(folder);
+  std::error_code ec;
+  while (!fs::exists(existing, ec) && existing.has_parent_path() &&
+         existing != existing.root_path())
+    existing = existing.parent_path();
+  struct statvfs s {};
+  if (::statvfs(existing.c_str(), &s) != 0) return;
+  const std::uintmax_t free_bytes =
+      static_cast<std::uintmax_t>(::geteuid() == 0 ? s.f_bfree : s.f_bavail) * s.f_frsize;
+  if (free_bytes < total_bytes)
+    fail(target.string(),
+         "cannot be written: it needs about " + std::to_string(total_bytes) +
+             " bytes, the disk has " + std::to_string(free_bytes) + " free",
+         "free some space and run again");
+}
+
 }  // namespace vesica::detail

@@ -6,6 +6,7 @@
 //  - a file that reached the process's file-size limit (ulimit -f): it was cut there;
 //  - a file system left without a free block: the last write may have been cut;
 //  - a gzip file (".gz") whose stream does not end properly or whose checksum is wrong.
+#include <cstdint>
 #include <filesystem>
 
 namespace vesica::detail {
@@ -13,5 +14,11 @@ namespace vesica::detail {
 // Throws vesica::Error naming `target` when `written` (a file or a folder tree) shows one
 // of the signs above.
 void check_written(const std::filesystem::path& written, const std::filesystem::path& target);
+
+// Before writing: throws vesica::Error naming `target` when `folder` (or the nearest folder
+// above it that exists) has fewer than `total_bytes` free, or the file-size limit is below
+// `largest_file_bytes`.
+void check_room(const std::filesystem::path& folder, std::uintmax_t total_bytes,
+                std::uintmax_t largest_file_bytes, const std::filesystem::path& target);
 
 }  // namespace vesica::detail

@@ -1,10 +1,10 @@
 #include "vesica/core/OutputGuard.h"
 
 #include <algorithm>
-#include <fstream>
 #include <mutex>
 #include <vector>
 
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 
 namespace fs = std::filesystem;
@@ -74,10 +74,10 @@ void protect_input(const fs::path& input) {
 }
 
 void write_folder_marker(const fs::path& folder) {
-  std::ofstream out(folder / kOutputFolderMarker, std::ios::binary);
-  out << kMarkerText;
-  out.close();
-  if (!out) fail((folder / kOutputFolderMarker).string(), "could not be written");
+  const fs::path marker = folder / kOutputFolderMarker;
+  std::error_code ec;
+  if (fs::is_regular_file(fs::symlink_status(marker, ec))) fs::remove(marker, ec);  // rewritten
+  write_new_file(marker, kMarkerText, marker);
 }
 
 bool carries_folder_marker(const fs::path& folder) {

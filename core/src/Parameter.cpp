@@ -73,6 +73,7 @@ nlohmann::json Parameter::describe() const {
   if (kind == Kind::Number || kind == Kind::Integer) j["range"] = range.to_json();
   if (kind == Kind::Choice) j["choices"] = choices;
   if (kind == Kind::Text) j["syntax"] = syntax;
+  if (names_output) j["writes_file"] = true;
   return j;
 }
 

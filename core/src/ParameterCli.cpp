@@ -43,7 +43,10 @@ void add_parameter_options(CLI::App& app, ParameterTable& table) {
         throw CLI::ValidationError(p.option() + " " + e.what());
       }
     };
-    const std::string group = p.kind == Parameter::Kind::Input ? "Inputs" : "Parameters";
+    // "Outputs": a file the stage writes, which StageSafety.h never protects as an input.
+    const std::string group = p.kind == Parameter::Kind::Input ? "Inputs"
+                              : p.names_output                 ? kOutputOptionGroup
+                                                               : "Parameters";
     if (p.kind == Parameter::Kind::Flag)
       app.add_flag_callback(
              p.option(), [store] { store("true"); }, help_line(p))

@@ -118,6 +118,24 @@ Parameter& ParameterTable::input(const std::string& name, std::string& path,
   return p;
 }
 
+Parameter& ParameterTable::output_file(const std::string& name, std::string& path,
+                                       const std::string& syntax, const std::string& help) {
+  Parameter& p = text(name, path, syntax, help);
+  p.names_output = true;
+  return p;
+}
+
+void ParameterTable::beside_output(const std::string& description, SideOutputRule rule) {
+  side_outputs_.emplace_back(description, std::move(rule));
+}
+
+std::vector<std::string> ParameterTable::side_outputs(const std::string& output) const {
+  std::vector<std::string> out;
+  for (const auto& [description, rule] : side_outputs_)
+    if (std::string path = rule(output); !path.empty()) out.push_back(std::move(path));
+  return out;
+}
+
 const Parameter* ParameterTable::find(const std::string& name) const {
   for (const auto& p : entries_)
     if (p.name == name) return &p;
@@ -142,7 +160,9 @@ nlohmann::json ParameterTable::describe() const {
   nlohmann::json parameters = nlohmann::json::array(), inputs = nlohmann::json::array();
   for (const auto& p : entries_)
     (p.kind == Parameter::Kind::Input ? inputs : parameters).push_back(p.describe());
-  return {{"tool", tool_}, {"parameters", parameters}, {"inputs", inputs}};
+  nlohmann::json side = nlohmann::json::array();
+  for (const auto& entry : side_outputs_) side.push_back(entry.first);
+  return {{"tool", tool_}, {"parameters", parameters}, {"inputs", inputs}, {"side_outputs", side}};
 }
 
 }  // namespace vesica

@@ -11,6 +11,7 @@
 #include "vesica/core/StageSafety.h"
 #include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Suggest.h"
+#include "vesica/core/UidScrub.h"
 #include "vesica/core/Version.h"
 
 namespace vesica {
@@ -74,8 +75,11 @@ int run_stage_main(CLI::App& app, int argc, char** argv, const CommonOptions& op
   configure_logging(options.json, options.verbose);
   ignore_file_size_signal();
   // The printed line, tool name included, stays within kMaxErrorLine.
-  const auto error_line = [&](const char* what) { return single_line(tool + ": error: " + what); };
+  const auto error_line = [&](const char* what) {
+    return single_line(without_uids(tool + ": error: " + what));
+  };
   try {
+    refuse_special_inputs(app);
     protect_command_line_inputs(app);
     begin_staging();  // every output replaced together, and only on success
     const int code = body();

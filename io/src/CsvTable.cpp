@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <vector>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace vesica::io {
 namespace {
@@ -21,22 +23,39 @@ bool all_empty(const std::vector<std::string>& cells) {
 
 // One line into `text`, at most `max_bytes` of it: false at the end of the file. A longer
 // line is an error before it is held in memory (a single 5 MB cell, a binary file).
-bool next_line(std::istream& in, std::vector<char>& buffer, std::size_t max_bytes, int line,
-               const std::string& file, std::string& text) {
-  if (!in.good()) return false;
-  buffer.resize(max_bytes + 2);  // room for one byte too many, and the terminator
-  in.getline(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-  const auto got = static_cast<std::size_t>(in.gcount());
-  if (in.eof()) {  // the last line, without a line break
-    text.assign(buffer.data(), got);
-    return got > 0;
-  }
-  if (in.fail())
+bool next_line(std::istream& in, std::size_t max_bytes, int line, const std::string& file,
+               std::string& text) {
+  const LineRead r = read_line(in, text, max_bytes);
+  if (r == LineRead::TooLong)
     fail(file,
          "line " + std::to_string(line) + " is longer than " + std::to_string(max_bytes) + " bytes",
          "not a CSV recording, or a cell holds far more than a value");
-  text.assign(buffer.data(), got - 1);  // without the '\n'
-  return true;
+  return r == LineRead::Line;
+}
+
+// The lines that may be data rows (not blank, not a comment, not separators alone), the
+// header included, counted over raw bytes and stopping once past `limit`: a table of too
+// many rows is refused in a fraction of the time that parsing them would take.
+std::size_t candidate_rows_up_to(std::istream& in, std::size_t limit) {
+  std::vector<char> buffer(std::size_t{1} << 20);
+  std::size_t count = 0;
+  bool at_start = true, comment = false, content = false;
+  while (count <= limit && in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto n = static_cast<std::size_t>(in.gcount());
+    for (std::size_t i = 0; i < n; ++i) {
+      const char c = buffer[i];
+      if (c == '\n') {
+        count += content && !comment;
+        at_start = true, comment = false, content = false;
+      } else if (c != ' ' && c != '\t' && c != '\r') {
+        if (at_start) comment = c == '#';
+        at_start = false;
+        content = content || (c != ',' && c != ';' && c != '"');
+      }
+    }
+  }
+  return count + (content && !comment);
 }
 
 }  // namespace
@@ -91,14 +110,19 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
                    const std::function<void(const CsvHeader&)>& on_header,
                    const std::function<void(const std::vector<std::string>&, int)>& on_row) {
   const std::string file = csv.string();
+  require_input_file(csv, kMaxTableFileBytes, "table");  // no pipe, no device, bounded
   std::ifstream in(csv, std::ios::binary);
   if (!in) fail(file, "cannot open the table", "check the path");
+  if (candidate_rows_up_to(in, options.max_rows + 1) > options.max_rows + 1)
+    fail(file, "more than " + std::to_string(options.max_rows) + " data rows",
+         "downsample the recording (vesica reads at most that many rows)");
+  in.clear();
+  in.seekg(0);
   CsvHeader header;
   bool have_header = false;
   std::size_t rows = 0;
   std::string text;
-  std::vector<char> buffer;
-  for (int line = 1; next_line(in, buffer, options.max_line_bytes, line, file, text); ++line) {
+  for (int line = 1; next_line(in, options.max_line_bytes, line, file, text); ++line) {
     if (line == 1) skip_byte_order_mark(text);
     const std::string t = trim(text);
     if (t.empty() || t[0] == '#') continue;
@@ -121,6 +145,24 @@ void read_csv_rows(const std::filesystem::path& csv, const CsvOptions& options,
   }
   if (in.bad()) fail(file, "could not be read to the end");
   if (!have_header) fail(file, "no header row", "the first non-comment line names the columns");
+}
+
+std::vector<std::string> read_leading_comments(const std::filesystem::path& csv,
+                                               std::size_t max_lines) {
+  const std::string file = csv.string();
+  require_input_file(csv, kMaxTableFileBytes, "table");
+  std::ifstream in(csv, std::ios::binary);
+  std::vector<std::string> comments;
+  std::string text;
+  for (int line = 1;
+       comments.size() < max_lines && next_line(in, kMaxCsvLineBytes, line, file, text); ++line) {
+    if (line == 1) skip_byte_order_mark(text);
+    const std::string t = trim(text);
+    if (t.empty()) continue;
+    if (t[0] != '#') break;  // the column header: the comments are over
+    comments.push_back(t.substr(1));
+  }
+  return comments;
 }
 
 CsvTable read_csv_table(const std::filesystem::path& csv, const CsvOptions& options) {

@@ -18,6 +18,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/io/LabelMap.h"
 #include "vesica/io/SlicerSegmentation.h"
+#include "vesica/io/VolumeHeaderCheck.h"
 
 namespace vesica::io {
 namespace {
@@ -72,6 +73,7 @@ bool is_label_map_file(const std::filesystem::path& path) {
 LabelMap read_label_map(const std::filesystem::path& path, int label) {
   const std::string file = path.string();
   if (!std::filesystem::exists(path)) fail(file, "label map not found");
+  check_volume_file(path);  // sizes and budget before ITK allocates what they claim
   require_three_dimensions(file);
   // A .seg.nrrd without segment keys was written by a tool that knows only NRRD (Slicer
   // reads such a file as one segment per label value): any non-zero voxel is inside.

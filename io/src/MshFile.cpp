@@ -13,6 +13,7 @@
 #include "MshCheck.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
 #include "vesica/io/GmshSession.h"
@@ -325,6 +326,7 @@ void write_msh(const VolumeMesh& mesh, const std::filesystem::path& path) {
 MshFile read_msh(const std::filesystem::path& path) {
   const std::string file = path.string();
   if (!std::filesystem::exists(path)) fail(file, "file not found");
+  require_input_file(path, kMaxMeshFileBytes, "mesh");
   detail::check_msh_file(path);
   MshFile out;
   with_gmsh(file, "gmsh could not read the mesh", [&] {

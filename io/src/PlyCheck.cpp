@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace vesica::io::detail {
 namespace {
@@ -101,12 +102,13 @@ void require_surface_elements(const Header& h, const std::string& file) {
 
 Header parse_header(std::istream& in, const std::string& file) {
   std::string line;
-  std::getline(in, line);
-  if (line.rfind("ply", 0) != 0) fail(file, "not a PLY file (no \"ply\" magic line)");
+  if (read_line(in, line, kMaxHeaderBytes) != LineRead::Line || line.rfind("ply", 0) != 0)
+    fail(file, "not a PLY file (no \"ply\" magic line)");
   Header h;
   bool have_format = false;
   while (true) {
-    if (!std::getline(in, line) || static_cast<std::size_t>(in.tellg()) > kMaxHeaderBytes)
+    if (read_line(in, line, kMaxHeaderBytes) != LineRead::Line ||
+        static_cast<std::size_t>(in.tellg()) > kMaxHeaderBytes)
       fail(file, "PLY header without \"end_header\" in its first 64 KiB");
     std::istringstream words(line);
     std::string keyword;
@@ -161,9 +163,10 @@ void check_ascii(std::istream& in, const Header& h, const std::string& file) {
   for (const Element& e : h.elements)
     for (std::uint64_t i = 0; i < e.count; ++i) {
       do {
-        if (!std::getline(in, line)) bad_element(file, e, i, "missing (the file ends)");
+        const LineRead r = read_line(in, line, kMaxAsciiLine);
+        if (r == LineRead::End) bad_element(file, e, i, "missing (the file ends)");
+        if (r == LineRead::TooLong) bad_element(file, e, i, "line too long");
       } while (line.find_first_not_of(" \t\r") == std::string::npos);
-      if (line.size() > kMaxAsciiLine) bad_element(file, e, i, "line too long");
       std::istringstream words(line);
       const auto next = [&]() {
         std::string w;

@@ -10,6 +10,7 @@
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace vesica::io {
 
@@ -52,6 +53,7 @@ std::string pvd_text(const std::vector<std::pair<double, std::string>>& steps) {
 
 std::vector<std::pair<double, std::string>> read_pvd(const std::filesystem::path& pvd) {
   const std::string file = pvd.string();
+  require_input_file(pvd, kMaxStateFileBytes, "series file");
   vtkXMLDataElement* root = vtkXMLUtilities::ReadElementFromFile(file.c_str());
   if (!root) fail(file, "not an XML file");
   vtkNew<vtkXMLDataElement> owner;  // frees the tree on every path out

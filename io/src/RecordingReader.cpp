@@ -367,6 +367,16 @@ Recording read_recording(const std::filesystem::path& csv, const ReaderOptions& 
     fail(file, options.min_rows == 2
                    ? "fewer than two data rows"
                    : "fewer than " + std::to_string(options.min_rows) + " data rows");
+  // The rows must span something: a time column stuck at one value has no axis to plot
+  // or rates to compute.
+  const std::vector<double>& order = *target(r, order_key);
+  if (!order.empty() && !(order.back() > order.front()))
+    fail(file,
+         order_key == "time"
+             ? "time never advances (every row at " + format_seconds(order.front()) + ")"
+             : "the " + order_key + " volume never changes (every row at " +
+                   format_number(order.front()) + " ml)",
+         "the rows must span the study");
   return r;
 }
 

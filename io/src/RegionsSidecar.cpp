@@ -1,7 +1,6 @@
 #include "vesica/io/RegionsSidecar.h"
 
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -13,18 +12,17 @@
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/JsonFile.h"
 #include "vesica/core/Regions.h"
+#include "vesica/core/SideOutputNames.h"
 
 namespace vesica::io {
 namespace {
 
 nlohmann::json parse_json(const std::filesystem::path& sidecar) {
-  try {
-    std::ifstream in(sidecar);
-    return nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    fail(sidecar.string(), std::string("not valid JSON: ") + e.what());
-  }
+  const nlohmann::json j = read_json_file(sidecar, kMaxMeshFileBytes).value_or(nullptr);
+  if (j.is_discarded()) fail(sidecar.string(), "not valid JSON");
+  return j;
 }
 
 Eigen::VectorXi tags_of(const nlohmann::json& j, const std::filesystem::path& sidecar) {
@@ -61,7 +59,7 @@ Eigen::MatrixXd centroids_of(const nlohmann::json& j, Eigen::Index tag_count,
 }  // namespace
 
 std::filesystem::path regions_sidecar_path(const std::filesystem::path& surface_path) {
-  return surface_path.string() + ".regions.json";
+  return regions_sidecar_name(surface_path.string());
 }
 
 void write_regions_sidecar(const TaggedSurface& surface, const std::filesystem::path& sidecar) {

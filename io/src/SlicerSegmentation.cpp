@@ -7,6 +7,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
 #include <sstream>
 
 #include "LowerCase.h"
@@ -58,6 +61,17 @@ itk::MetaDataDictionary header_of(const std::string& file) {
   return io->GetMetaDataDictionary();
 }
 
+// A whole number of the header; anything else is an error naming the key.
+int header_integer(const std::string& text, const std::string& file, const std::string& key) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || v < INT_MIN ||
+      v > INT_MAX)
+    fail(file, key + " \"" + single_line(text, 24) + "\" is not a whole number");
+  return static_cast<int>(v);
+}
+
 }  // namespace
 
 bool lists_segments(const std::filesystem::path& path) {
@@ -75,8 +89,9 @@ std::vector<SegmentInfo> read_segments(const std::filesystem::path& path) {
     SegmentInfo s;
     s.name = name;
     if (itk::ExposeMetaData<std::string>(dict, prefix + "LabelValue", value))
-      s.label_value = std::stoi(value);
-    if (itk::ExposeMetaData<std::string>(dict, prefix + "Layer", layer)) s.layer = std::stoi(layer);
+      s.label_value = header_integer(value, file, prefix + "LabelValue");
+    if (itk::ExposeMetaData<std::string>(dict, prefix + "Layer", layer))
+      s.layer = header_integer(layer, file, prefix + "Layer");
     segments.push_back(s);
   }
   if (segments.empty())

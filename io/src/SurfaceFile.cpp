@@ -32,10 +32,14 @@
 #include "PlyCheck.h"
 #include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
+#include "VtkXmlCheck.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
+#include "vesica/core/SideOutputNames.h"
+#include "vesica/io/BladderScale.h"
 #include "vesica/io/RegionsSidecar.h"
 
 namespace vesica::io {
@@ -257,12 +261,15 @@ SurfaceFile read_surface_file(const std::filesystem::path& path) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) fail(name, "surface file not found");
   if (!is_surface_file(path)) fail(name, "unknown surface format", "use .vtp, .stl, .ply or .obj");
+  require_input_file(path, kMaxMeshFileBytes, "surface");
   vtkSmartPointer<vtkPolyData> polydata = read_polydata(path);
   if (!polydata || polydata->GetNumberOfPolys() == 0) fail(name, "the surface has no triangles");
   const std::optional<RegionsSidecar> edited =
       lower_extension(path) == ".vtp" ? std::nullopt : apply_sidecar(path, polydata);
   SurfaceFile file;
   file.surface = surface_from_polydata(polydata, name);
+  const Eigen::MatrixXd& p = file.surface.points_mm;
+  check_surface_span((p.colwise().maxCoeff() - p.colwise().minCoeff()).maxCoeff(), name);
   if (edited) {
     file.surface.region =
         retag_by_nearest_centroid(edited->centroids, edited->region, file.surface);
@@ -312,7 +319,8 @@ void write_surface_file(const TaggedSurface& surface, const std::filesystem::pat
   write_atomically(path, [&](const std::filesystem::path& tmp) {
     write_polydata(poly, ext, options, tmp, path);
   });
-  if (ext != ".vtp") write_regions_sidecar(surface, regions_sidecar_path(path));
+  if (surface_needs_sidecar(path.string()))
+    write_regions_sidecar(surface, regions_sidecar_path(path));
 }
 
 }  // namespace vesica::io

@@ -18,11 +18,12 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include "SurfaceHeaderCheck.h"
 #include "VtkErrors.h"
+#include "VtkXmlCheck.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Regions.h"
+#include "vesica/core/SideOutputNames.h"
 
 namespace vesica::io {
 namespace {
@@ -172,7 +173,7 @@ void write_vtu(const VtuGrid& g, const std::filesystem::path& path,
 VtuGrid read_vtu(const std::filesystem::path& path) {
   const std::string name = path.string();
   if (!std::filesystem::exists(path)) fail(name, "file not found");
-  detail::check_vtk_xml_counts(path);
+  detail::check_vtk_xml_counts(path);  // a regular file of bounded size, counts that fit
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   if (!reader->CanReadFile(name.c_str())) fail(name, "not a VTK XML unstructured grid");
   reader->SetFileName(name.c_str());
@@ -286,7 +287,7 @@ VolumeMesh read_mesh_vtu(const std::filesystem::path& path) {
 }
 
 std::filesystem::path vtu_beside(const std::filesystem::path& msh_path) {
-  return msh_path.parent_path() / (msh_path.stem().string() + ".vtu");
+  return vtu_beside_msh(msh_path.string());
 }
 
 }  // namespace vesica::io

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "vesica/core/SideOutputNames.h"
+
 namespace vesica::mesh {
 namespace {
 
@@ -76,6 +78,7 @@ ParameterTable parameter_table(MeshSettings& s) {
         return s.fiber_long_axis ? nlohmann::json("long-axis")
                                  : nlohmann::json({d.x(), d.y(), d.z()});
       });
+  t.beside_output("the meshes for ParaView, bladder.vtu beside bladder.msh", vtu_beside_msh);
   return t;
 }
 

@@ -33,10 +33,13 @@ Known known_outputs(const Plan& plan, const PlannedStage& s) {
   return k;
 }
 
-// The stage's outputs that a user could have touched: the planned one and every recorded
-// one (sidecars, the .vtu beside a .msh), not vesica's own files under .vesica/.
+// The stage's outputs that a user could have touched: the planned one, the files it
+// writes beside it (declared by its tool: a sidecar, the .vtu beside a .msh, export_feb)
+// and every recorded one, not vesica's own files under .vesica/.
 std::vector<std::string> candidates(const PlannedStage& s, const Known& k) {
   std::vector<std::string> paths = {s.output};
+  for (const auto& side : s.side_outputs)
+    if (std::find(paths.begin(), paths.end(), side) == paths.end()) paths.push_back(side);
   for (const auto& r : k.records)
     if (std::find(paths.begin(), paths.end(), r.path) == paths.end()) paths.push_back(r.path);
   paths.erase(std::remove_if(paths.begin(), paths.end(),

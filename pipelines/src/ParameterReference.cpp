@@ -8,6 +8,7 @@
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/Plan.h"
 #include "vesica/pipelines/StageTables.h"
+#include "vesica/simulate/ParameterCatalogue.h"
 
 namespace vesica::pipelines {
 namespace {
@@ -69,6 +70,17 @@ std::string tool_section(const ParameterTable& table) {
     if (p.kind == Parameter::Kind::Input)
       inputs += "- `" + p.name + "` (`" + p.option() + " FILE`): " + p.help + "\n";
   if (!inputs.empty()) md += "\nNamed inputs, given under the stage's `inputs:`:\n\n" + inputs;
+  // Files written besides the output: the runner keeps them inside the workdir and saves
+  // what is there before the stage replaces it, as for the output.
+  std::string side;
+  const nlohmann::json described = table.describe();
+  for (const nlohmann::json& d : described["side_outputs"])
+    side += "- " + d.get<std::string>() + "\n";
+  for (const Parameter& p : table.entries())
+    if (p.names_output) side += "- the file `" + p.name + "` names\n";
+  if (!side.empty())
+    md += "\nWritten beside the output (inside the workdir, saved before they are replaced):\n\n" +
+          side;
   return md;
 }
 
@@ -86,6 +98,8 @@ std::string parameter_reference_markdown(const std::string& only) {
         "`vesica validate` says so): " +
         missing + "; see their own pages.\n";
   }
+  // The physical parameters once, before the stage tables that take them.
+  if (only.empty()) md += simulate::catalogue_markdown();
   for (const auto& tool : tools) md += tool_section(*stage_table(tool));
   return md;
 }

@@ -2,9 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
-#include <sstream>
-
+#include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/StudyMetrics.h"
 
@@ -12,6 +11,9 @@ namespace fs = std::filesystem;
 
 namespace vesica::pipelines {
 namespace {
+
+// A pipeline file is a page or two of YAML; a study of thousands of variants still fits.
+constexpr std::uintmax_t kMaxPipelineFileBytes = std::uintmax_t{4} << 20;
 
 const std::vector<std::string> kTopKeys = {"pipeline", "workdir", "inputs", "stages", "study"};
 const std::vector<std::string> kStageKeys = {"tool",   "input",    "inputs", "output",
@@ -371,16 +373,16 @@ PipelineSpec parse_pipeline_text(const std::string& text, const fs::path& file,
 
 PipelineSpec load_pipeline_file(const fs::path& file, Diagnostics& diagnostics) {
   const fs::path absolute = fs::absolute(file).lexically_normal();
-  std::ifstream in(absolute, std::ios::binary);
-  if (!in) {
-    diagnostics.add({}, "cannot be read");
+  std::string text;
+  try {
+    text = read_input_file(absolute, kMaxPipelineFileBytes, "pipeline file");
+  } catch (const Error& e) {
+    diagnostics.add({}, "cannot be read: " + e.problem());
     PipelineSpec empty;
     empty.file = absolute;
     return empty;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_pipeline_text(text.str(), absolute, diagnostics);
+  return parse_pipeline_text(text, absolute, diagnostics);
 }
 
 }  // namespace vesica::pipelines

@@ -8,9 +8,11 @@
 #include <unordered_map>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 #include "vesica/core/Suggest.h"
 #include "vesica/pipelines/ParameterCheck.h"
 #include "vesica/pipelines/PathIndex.h"
+#include "vesica/pipelines/StageTables.h"
 #include "vesica/pipelines/StateFolder.h"
 #include "vesica/pipelines/StudyExpansion.h"
 
@@ -55,12 +57,36 @@ std::string loc(const SourcePos& p) {
   return "line " + std::to_string(p.line);
 }
 
+// A path no file system can hold (a name over 255 bytes, a path over 4095): every later
+// look at it (exists, status) would throw ENAMETOOLONG instead of answering, so it is a
+// problem of the pipeline file, reported with its line. Empty when it fits.
+std::string unholdable(const fs::path& p) {
+  constexpr std::size_t kMaxName = 255, kMaxPath = 4095;
+  if (p.native().size() > kMaxPath)
+    return "a path of " + std::to_string(p.native().size()) + " characters (at most " +
+           std::to_string(kMaxPath) + ")";
+  for (const fs::path& part : p)
+    if (part.native().size() > kMaxName)
+      return "a name of " + std::to_string(part.native().size()) + " characters (at most " +
+             std::to_string(kMaxName) + ")";
+  return "";
+}
+
 // The file's stages resolved to workdir-relative paths, before any study expansion.
+// A file a stage writes besides its output, report and manifest: a side output its tool
+// declares (bladder.vtu beside bladder.msh) or a parameter naming a file (export_feb).
+struct SideFile {
+  std::string path;   // workdir-relative
+  SourcePos pos;      // of the output, or of the parameter's value
+  std::string param;  // the parameter's key; empty for a declared side output
+};
+
 struct BaseStage {
   const StageSpec* spec = nullptr;
   std::vector<std::string> positional;
   std::vector<std::pair<std::string, std::string>> named;
   std::string output, report, manifest;
+  std::vector<SideFile> side;
   bool default_report = false, default_manifest = false;  // in .vesica/, named by the id
   std::vector<std::size_t> deps;                          // indices into the base list
   std::vector<long> producer_of_positional, producer_of_named;
@@ -83,8 +109,13 @@ class Planner {
       plan_.workdir = (base / spec.workdir).lexically_normal();
     for (const auto& e : spec.externals) {
       const fs::path abs = (base / e.path).lexically_normal();
-      if (!fs::exists(abs))
+      if (const std::string why = unholdable(abs); !why.empty())
+        d_.add(e.pos, "external input '" + e.name + "' is " + why);
+      else if (!fs::exists(abs))
         d_.add(e.pos, "external input '" + e.name + "' not found: " + abs.string());
+      else if (is_special_file(abs))
+        d_.add(e.pos, "external input '" + e.name + "' is a named pipe, device or socket, " +
+                          "not a file a stage can read: " + abs.string());
       externals_[e.name] = abs;
     }
   }
@@ -143,10 +174,27 @@ class Planner {
     if (fs::path(p).is_absolute() || p == ".." || p.compare(0, 3, "../") == 0)
       d_.add(ref.pos, "the " + what + " of stage '" + s.name +
                           "' must stay inside the workdir: " + ref.text);
-    else if (what == "output" && state::is_state_path(p))
-      d_.add(ref.pos, "the output of stage '" + s.name + "' may not be inside " + state::kFolder +
-                          "/, vesica's own folder: " + ref.text);
+    else if (what != "report" && what != "manifest" && state::is_state_path(p))
+      d_.add(ref.pos, "the " + what + " of stage '" + s.name + "' may not be inside " +
+                          state::kFolder + "/, vesica's own folder: " + ref.text);
     return p;
+  }
+
+  // What the stage's tool writes beside its output (its table's side outputs), and the files
+  // its parameters name for writing, each checked to stay inside the workdir as the output.
+  std::vector<SideFile> side_files(const StageSpec& s, const std::string& output) {
+    std::vector<SideFile> files;
+    const std::optional<ParameterTable> table = stage_table(s.tool);
+    if (!table) return files;
+    for (const std::string& path : table->side_outputs(output))
+      files.push_back({normal_path(path), s.output.pos, ""});
+    for (const Param& p : s.params) {
+      const Parameter* entry = table->find(p.key);
+      if (!entry || !entry->names_output || p.kind != Param::Kind::Value || p.value.empty())
+        continue;
+      files.push_back({own_path({p.value, p.pos}, p.key, s), p.pos, p.key});
+    }
+    return files;
   }
 
   bool known_tool(const std::string& tool) {
@@ -173,6 +221,8 @@ class Planner {
             b.default_manifest ? state::manifest_path(s.name) : own_path(s.manifest, "manifest", s);
         outputs_.add(b.output, static_cast<long>(base_.size()));
         reports_.emplace(b.report, static_cast<long>(base_.size()));
+        b.side = side_files(s, b.output);
+        for (const SideFile& f : b.side) outputs_.add(f.path, static_cast<long>(base_.size()));
       }
       if (!known_tool(s.tool))
         d_.add(s.tool_pos, "unknown tool '" + s.tool + "' for stage '" + s.name + "'" +
@@ -200,6 +250,10 @@ class Planner {
                       b.output + "': a stage would replace what it reads");
       return -1;
     }
+    if (const std::string why = unholdable(plan_.workdir / path); !why.empty()) {
+      d_.add(pos, "input of stage '" + b.spec->name + "' is " + why);
+      return -1;
+    }
     if (producer >= 0) {
       if (std::count(b.deps.begin(), b.deps.end(), producer) == 0)
         b.deps.push_back(static_cast<std::size_t>(producer));
@@ -207,6 +261,9 @@ class Planner {
       d_.add(pos, "input '" + path + "' of stage '" + b.spec->name +
                       "' is not written by any stage and does not exist (looked in " +
                       plan_.workdir.string() + ")");
+    } else if (!external && is_special_file((plan_.workdir / path).lexically_normal())) {
+      d_.add(pos, "input '" + path + "' of stage '" + b.spec->name +
+                      "' is a named pipe, device or socket, not a file a stage can read");
     }
     return producer;
   }
@@ -230,9 +287,11 @@ class Planner {
   // The paths a stage writes: output, report, manifest, with the line each comes from.
   static std::vector<Written> written_by(const BaseStage& b) {
     const StageSpec& s = *b.spec;
-    return {{b.output, &s, s.output.pos},
-            {b.report, &s, b.default_report ? s.output.pos : s.report.pos},
-            {b.manifest, &s, b.default_manifest ? s.output.pos : s.manifest.pos}};
+    std::vector<Written> w = {{b.output, &s, s.output.pos},
+                              {b.report, &s, b.default_report ? s.output.pos : s.report.pos},
+                              {b.manifest, &s, b.default_manifest ? s.output.pos : s.manifest.pos}};
+    for (const SideFile& f : b.side) w.push_back({f.path, &s, f.pos});
+    return w;
   }
 
   void check_duplicate_outputs() {
@@ -281,6 +340,10 @@ class Planner {
     for (const auto& b : base_) {
       if (b.output.empty()) continue;
       for (const auto& w : written_by(b)) {
+        if (const std::string why = unholdable(plan_.workdir / w.path); !why.empty()) {
+          d_.add(w.pos, "output of stage '" + w.stage->name + "' is " + why);
+          continue;
+        }
         const std::string what = replaces_what(w.path);
         if (!what.empty())
           d_.add(w.pos, "output '" + w.path + "' of stage '" + w.stage->name + "' " + what +
@@ -393,6 +456,12 @@ class Planner {
     p.manifest = b.default_manifest ? state::manifest_path(p.id) : prefix + b.manifest;
     auto it = run.overrides.find(s.name);
     p.params = it == run.overrides.end() ? s.params : apply_overrides(s.params, it->second);
+    for (const SideFile& f : b.side) {
+      p.side_outputs.push_back(prefix + f.path);
+      // A file a parameter names is the variant's own, as its output is.
+      for (Param& param : p.params)
+        if (!f.param.empty() && param.key == f.param) param.value = prefix + f.path;
+    }
     for (std::size_t k = 0; k < b.positional.size(); ++k) {
       p.inputs.push_back(input(b.positional[k], b.producer_of_positional[k]));
       p.argv.push_back(p.inputs.back());
@@ -449,6 +518,8 @@ long Plan::producer_of(const std::string& path) const {
     producers_ = std::make_shared<Producers>();
     for (std::size_t i = 0; i < stages.size(); ++i) {
       producers_->outputs.add(stages[i].output, static_cast<long>(i));
+      for (const std::string& side : stages[i].side_outputs)
+        producers_->outputs.add(side, static_cast<long>(i));
       producers_->reports.emplace(stages[i].report, static_cast<long>(i));
     }
     indexed_ = stages.size();

@@ -12,6 +12,7 @@
 
 #include "Joined.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/UidScrub.h"
 #include "vesica/pipelines/ChildProcess.h"
 #include "vesica/pipelines/EditBackup.h"
 #include "vesica/pipelines/MeshEditFollow.h"
@@ -44,10 +45,11 @@ std::string without_tool_prefix(const std::string& progress) {
   return end == std::string::npos ? progress : progress.substr(end + 2);
 }
 
-// The files a stage's run may leave at its outputs' places: the planned output and every
-// output its manifest recorded, not vesica's own files.
+// The files a stage's run may leave at its outputs' places: the planned output, the files
+// it writes beside it and every output its manifest recorded, not vesica's own files.
 std::vector<std::string> output_places(const Plan& plan, const PlannedStage& s) {
   std::vector<std::string> paths = {s.output};
+  paths.insert(paths.end(), s.side_outputs.begin(), s.side_outputs.end());
   if (const auto m = read_stage_manifest(plan.in_workdir(s.manifest)); m && m->readable())
     for (const auto& r : m->outputs)
       if (!state::is_state_path(r.path) && r.path != s.report &&
@@ -108,7 +110,7 @@ class Execution {
   }
 
   RunResult run() {
-    fs::create_directories(plan_.workdir / state::kFolder);
+    state::require_state_folder(plan_.workdir);
     for (std::size_t i = 0; i < plan_.stages.size(); ++i)
       if (result_.stages[i].action == "kept")
         follow_kept_mesh_edit(plan_, i, [&](const std::string& line) { say(line); });
@@ -247,7 +249,10 @@ class Execution {
     for (const auto& r : running_) r.process->signal_group(signal);
   }
 
-  void forward(std::size_t i, const std::string& line) {
+  // Every line a stage prints reaches the terminal, the run's JSON and the failure record
+  // through here: without DICOM UIDs (a slice's file name may be one).
+  void forward(std::size_t i, const std::string& raw) {
+    const std::string line = without_uids(raw);
     StageOutcome& o = result_.stages[i];
     lines_[i].push_back(line);
     if (options_.capture)

@@ -10,10 +10,7 @@ namespace {
 
 // The stage's arguments as the checkpoint records them: without --resume.
 nlohmann::json arguments_of(const PlannedStage& s) {
-  nlohmann::json a = nlohmann::json::array();
-  for (const auto& arg : s.argv)
-    if (arg != "--resume") a.push_back(arg);
-  return a;
+  return without_resume(s.argv);
 }
 
 bool inputs_unchanged(const Plan& plan, const nlohmann::json& inputs) {
@@ -26,6 +23,13 @@ bool inputs_unchanged(const Plan& plan, const nlohmann::json& inputs) {
 }
 
 }  // namespace
+
+std::vector<std::string> without_resume(const std::vector<std::string>& argv) {
+  std::vector<std::string> a;
+  for (const auto& arg : argv)
+    if (arg != "--resume") a.push_back(arg);
+  return a;
+}
 
 bool stage_can_resume(const PlannedStage& s) {
   return s.tool == "simulate";

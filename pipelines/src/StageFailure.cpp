@@ -2,9 +2,10 @@
 
 #include <signal.h>
 
-#include <fstream>
-
 #include "vesica/core/AtomicOutput.h"
+#include "vesica/core/JsonFile.h"
+#include "vesica/core/UidScrub.h"
+#include "vesica/pipelines/StageManifest.h"
 #include "vesica/pipelines/StateFolder.h"
 
 namespace fs = std::filesystem;
@@ -44,11 +45,11 @@ std::string StageFailure::describe() const {
       return runner_alive() ? "running (vesica PID " + std::to_string(pid) + ")"
                             : "interrupted: the run was killed";
     case State::Interrupted:
-      return "interrupted: " + error;
+      return "interrupted: " + without_uids(error);
     case State::Failed:
       break;
   }
-  return "failed (exit " + std::to_string(exit_code) + "): " + error;
+  return "failed (exit " + std::to_string(exit_code) + "): " + without_uids(error);
 }
 
 void write_stage_failure(const Plan& plan, const std::string& id, const StageFailure& failure) {
@@ -57,25 +58,30 @@ void write_stage_failure(const Plan& plan, const std::string& id, const StageFai
   const nlohmann::json j = {{"state", state_name(failure.state)},
                             {"pid", failure.pid},
                             {"exit_code", failure.exit_code},
-                            {"error", failure.error},
+                            {"error", without_uids(failure.error)},
                             {"utc", failure.utc.empty() ? utc_now_iso8601() : failure.utc},
                             {"outputs_before", outputs}};
   write_text_atomically(plan.in_workdir(state::failure_path(id)), j.dump(2) + "\n");
 }
 
 std::optional<StageFailure> read_stage_failure(const Plan& plan, const std::string& id) {
-  std::ifstream in(plan.in_workdir(state::failure_path(id)));
-  if (!in) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (!j.is_object()) return std::nullopt;
+  const auto j = read_json_file(plan.in_workdir(state::failure_path(id)));
+  if (!j || !j->is_object()) return std::nullopt;
   StageFailure f;
-  f.state = state_from(j.value("state", ""));
-  f.pid = j.value("pid", 0L);
-  f.exit_code = j.value("exit_code", 0);
-  f.error = j.value("error", "");
-  f.utc = j.value("utc", "");
-  for (const auto& r : j.value("outputs_before", nlohmann::json::array()))
-    if (r.is_object()) f.outputs_before.push_back(file_record_from_json(r));
+  try {
+    f.state = state_from(j->value("state", ""));
+    f.pid = j->value("pid", 0L);
+    f.exit_code = j->value("exit_code", 0);
+    f.error = j->value("error", "");
+    f.utc = j->value("utc", "");
+    for (const auto& r : j->value("outputs_before", nlohmann::json::array()))
+      if (r.is_object()) {
+        FileRecord record = file_record_from_json(r);
+        if (stays_inside_workdir(record.path)) f.outputs_before.push_back(std::move(record));
+      }
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;  // a field of the wrong type: not a record vesica wrote
+  }
   return f;
 }
 

@@ -1,9 +1,9 @@
 #include "vesica/pipelines/StageManifest.h"
 
 #include <algorithm>
-#include <fstream>
 
 #include "vesica/core/ContentHash.h"
+#include "vesica/core/JsonFile.h"
 #include "vesica/pipelines/PathIndex.h"
 
 namespace fs = std::filesystem;
@@ -36,6 +36,15 @@ std::vector<FileRecord> records(const nlohmann::json& list) {
   return out;
 }
 
+// A stage's outputs are inside its workdir: a record naming a place outside (an edited or
+// damaged manifest) is dropped, so that no backup or check ever reaches there.
+std::vector<FileRecord> inside_workdir(std::vector<FileRecord> list) {
+  list.erase(std::remove_if(list.begin(), list.end(),
+                            [](const FileRecord& r) { return !stays_inside_workdir(r.path); }),
+             list.end());
+  return list;
+}
+
 }  // namespace
 
 const FileRecord* StageManifest::output(const std::string& path) const {
@@ -49,19 +58,34 @@ bool recorded(const std::vector<FileRecord>& records, const std::string& path) {
                      [&](const FileRecord& r) { return inside_or_equal(r.path, path); });
 }
 
+bool stays_inside_workdir(const std::string& path) {
+  const fs::path p = fs::path(path).lexically_normal();
+  return !path.empty() && !p.is_absolute() && p != ".." && (p.empty() || *p.begin() != "..");
+}
+
 std::optional<StageManifest> read_stage_manifest(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) return std::nullopt;
+  auto json = read_json_file(path);
+  if (!json) return std::nullopt;
   StageManifest m;
-  m.json = nlohmann::json::parse(in, nullptr, false);
+  m.json = std::move(*json);
   if (!m.readable()) return m;
   std::error_code ec;
   m.written = fs::last_write_time(path, ec);
-  m.inputs = records(m.json.value("inputs", nlohmann::json()));
-  m.outputs = records(m.json.value("outputs", nlohmann::json()));
-  for (const auto& a : m.json.value("accepted_edits", nlohmann::json::array()))
-    if (a.is_object() && a.contains("path") && a["path"].is_string())
-      m.accepted.push_back(a["path"].get<std::string>());
+  const nlohmann::json discarded(nlohmann::json::value_t::discarded);
+  if ((m.json.contains("version") && !m.json["version"].is_string()) ||
+      (m.json.contains("invocation") && !m.json["invocation"].is_array())) {
+    m.json = discarded;  // not a manifest vesica wrote
+    return m;
+  }
+  try {
+    m.inputs = records(m.json.value("inputs", nlohmann::json()));
+    m.outputs = inside_workdir(records(m.json.value("outputs", nlohmann::json())));
+    for (const auto& a : m.json.value("accepted_edits", nlohmann::json::array()))
+      if (a.is_object() && a.contains("path") && a["path"].is_string())
+        m.accepted.push_back(a["path"].get<std::string>());
+  } catch (const nlohmann::json::exception&) {  // a field of the wrong type: not vesica's
+    m.json = discarded;
+  }
   return m;
 }
 

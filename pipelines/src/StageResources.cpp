@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <set>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "vesica/core/JsonFile.h"
 #include "vesica/phantom/PhantomParameters.h"
 #include "vesica/pipelines/StageTables.h"
 
@@ -116,10 +116,8 @@ long nearest_upstream(const Plan& plan, std::size_t index, const std::string& to
 }
 
 std::optional<nlohmann::json> read_report(const Plan& plan, const PlannedStage& s) {
-  std::ifstream in(plan.in_workdir(s.report));
-  if (!in) return std::nullopt;
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object()) return std::nullopt;
+  auto j = read_json_file(plan.in_workdir(s.report));
+  if (!j || !j->is_object()) return std::nullopt;
   return j;
 }
 

@@ -66,7 +66,9 @@ std::string own_reason(const Plan& plan, const PlannedStage& s, const StageManif
   const std::string recorded_version = m.json.value("version", "");
   if (recorded_version != vesica::version())
     return "tool version changed (" + recorded_version + " -> " + vesica::version() + ")";
-  const std::vector<std::string> invocation = strings(m.json.value("invocation", nlohmann::json()));
+  // A resumed run's invocation ends in --resume, which the runner added: not a parameter.
+  const std::vector<std::string> invocation =
+      without_resume(strings(m.json.value("invocation", nlohmann::json())));
   if (invocation != s.argv) return describe_invocation_change(invocation, s.argv);
   for (const FileRecord& r : m.inputs) {
     const FileState what = compare_with_record(plan.in_workdir(r.path), r, m.written);

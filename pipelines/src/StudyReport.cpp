@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <set>
 
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/JsonFile.h"
 #include "vesica/core/Log.h"
 #include "vesica/pipelines/CapacityStress.h"
 #include "vesica/pipelines/StudyPage.h"
@@ -75,8 +75,8 @@ void read_built_volume(const Plan& plan, const std::vector<std::size_t>& chain, 
   for (std::size_t c : chain) {
     const PlannedStage& s = plan.stages[c];
     if (s.tool != "surface" || s.report.empty()) continue;
-    std::ifstream in(plan.in_workdir(s.report));
-    const nlohmann::json report = nlohmann::json::parse(in, nullptr, false);
+    const nlohmann::json report =
+        read_json_file(plan.in_workdir(s.report)).value_or(nlohmann::json());
     row.built_volume_ml = json_number(report, "volume_ml");
   }
 }
@@ -91,8 +91,11 @@ void read_capacity_stress(const PlannedStage& simulate, StudyRow& row) {
 }
 
 void read_outputs(StudyRow& row) {
-  std::ifstream in(row.simulation / "summary.json");
-  if (in) row.summary = nlohmann::json::parse(in, nullptr, false);
+  try {
+    row.summary = read_json_file(row.simulation / "summary.json").value_or(nullptr);
+  } catch (const Error& e) {
+    row.failure = e.what();
+  }
   if (row.summary.is_discarded()) row.summary = nullptr;
   if (!fs::exists(row.simulation / "history.csv")) return;
   row.history_csv = row.simulation / "history.csv";

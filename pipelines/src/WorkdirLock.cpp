@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -25,11 +26,26 @@ long holder_pid(int fd) {
 
 WorkdirLock::WorkdirLock(const fs::path& workdir, const std::function<void(long pid)>& waiting) {
   const fs::path path = workdir / state::lock_path();
-  std::error_code ec;
-  fs::create_directories(path.parent_path(), ec);
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0)
-    fail(path.string(), std::string("cannot open the workdir's lock: ") + std::strerror(errno));
+  state::require_state_folder(workdir);
+  // Never through a link, and never a file with other names (a hard link to a user's
+  // file): the lock is written to, and only vesica's own lock may be.
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    const int error = errno;
+    if (error == ELOOP)
+      fail(path.string(), "is a symbolic link, not vesica's lock; nothing was written",
+           "remove it (vesica makes its own)");
+    fail(path.string(), std::string("cannot open the workdir's lock: ") + std::strerror(error));
+  }
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode) || st.st_nlink != 1) {
+    ::close(fd_);
+    fd_ = -1;
+    fail(path.string(),
+         "is not vesica's lock (a file of other names, or not a file); nothing "
+         "was written",
+         "remove it (vesica makes its own)");
+  }
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     if (waiting) waiting(holder_pid(fd_));
     while (::flock(fd_, LOCK_EX) != 0)

@@ -3,14 +3,20 @@
 // exactly as vesica-simulate does (the same parameter table turns the protocol dict into
 // settings), and results come back as numpy arrays and dicts: the history as columns
 // (units in the keys), the summary as summary.json has it. Runs release the GIL.
-// Units: as the files and tables say (mm, ml, cmH2O, kPa at the edges), the material
-// dict in SI (Pa, s) as the library's registry takes it.
+// Units: as the files and tables say (mm, ml, cmH2O, kPa at the edges). Arguments are taken
+// by value: a dict is read once and never kept or changed, a default is None (never a
+// shared dict), and a bad key is a ValueError of its own call.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "vesica/compare/CompareParameters.h"
 #include "vesica/compare/CompareRun.h"
@@ -24,8 +30,11 @@
 #include "vesica/io/RecordingReader.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
+#include "vesica/simulate/ModelCardJson.h"
+#include "vesica/simulate/ParameterCatalogue.h"
 #include "vesica/simulate/SimulateParameters.h"
 #include "vesica/simulate/SimulateSettings.h"
+#include "vesica/simulate/materials/MaterialRegistry.h"
 #include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/wall/WallLoading.h"
 
@@ -64,35 +73,59 @@ std::string parameter_text(const py::handle& value) {
   return py::str(py::repr(value)).cast<std::string>();  // full precision
 }
 
-// Applies {key: value} through a stage's parameter table: the same checks, units and
-// defaults as the command line and pipeline files.
-void apply_parameters(ParameterTable& table, const py::dict& params, const std::string& tool) {
-  for (const auto& [key, value] : params) {
-    const std::string name = py::str(key).cast<std::string>();
+// A dict of parameter-table keys as (key, text) pairs, read once: the caller's dict is
+// never kept, so nothing it does later reaches vesica, and nothing vesica does reaches it.
+using Keys = std::vector<std::pair<std::string, std::string>>;
+
+Keys keys_of(const py::object& params) {
+  Keys keys;
+  if (params.is_none()) return keys;
+  if (!py::isinstance<py::dict>(params)) throw py::type_error("parameters must be a dict or None");
+  for (const auto& [key, value] : params.cast<py::dict>())
+    keys.emplace_back(py::str(key).cast<std::string>(), parameter_text(value));
+  return keys;
+}
+
+// Applies the keys through a stage's parameter table: the same checks, units and defaults
+// as the command line and pipeline files. An unknown key or a bad value is a ValueError of
+// this call alone (the table is bound to settings of the call's own).
+void apply_parameters(ParameterTable& table, const Keys& keys, const std::string& tool) {
+  for (const auto& [name, text] : keys) {
     const Parameter* p = table.find(name);
-    if (!p) usage_error(tool + " has no parameter '" + name + "'");
-    const std::string text = parameter_text(value);
+    if (!p) throw py::value_error(tool + " has no parameter '" + name + "'");
     if (p->kind == Parameter::Kind::Flag && text.empty()) continue;  // False: not given
     try {
       p->assign(text);
     } catch (const ParameterValueError& e) {
-      usage_error(name + " " + e.what());
+      throw py::value_error(name + " " + e.what());
     }
   }
 }
 
-simulate::SimulateSettings settings_from(const py::dict& params) {
+// Settings from a fresh table, the key lists applied in order (a later one wins).
+simulate::SimulateSettings settings_from(const std::vector<const Keys*>& lists) {
   simulate::SimulateSettings s;
   ParameterTable table = simulate::parameter_table(s);
-  apply_parameters(table, params, "vesica-simulate");
+  for (const Keys* keys : lists) apply_parameters(table, *keys, "vesica-simulate");
   s.wall.posture = s.protocol.posture = s.posture;  // one posture for both, as in the CLI
   s.run.reference = s.wall.reference;
   return s;
 }
 
-simulate::MaterialSpec material_from(const py::dict& material) {
+// The material: vesica-simulate's keys ({'material': 'neo-hookean', 'mu_kpa': 5}), or the
+// library's SI spec of earlier versions ({'name': 'neo-hookean', 'mu': 5e3}), which says
+// the keys to give instead.
+std::optional<simulate::MaterialSpec> si_material(const py::object& material) {
+  if (material.is_none() || !py::isinstance<py::dict>(material)) return std::nullopt;
+  const py::dict d = material.cast<py::dict>();
+  if (!d.contains("name")) return std::nullopt;
+  PyErr_WarnEx(PyExc_DeprecationWarning,
+               "a material {'name': ..., SI parameters} is the earlier form: give "
+               "vesica-simulate's keys, e.g. {'material': 'neo-hookean', 'mu_kpa': 5} "
+               "(docs/parameters.md)",
+               1);
   simulate::MaterialSpec spec;
-  for (const auto& [key, value] : material) {
+  for (const auto& [key, value] : d) {
     const std::string name = py::str(key).cast<std::string>();
     if (name == "name")
       spec.name = value.cast<std::string>();
@@ -159,42 +192,99 @@ py::dict read_mesh(const std::string& path) {
   return d;
 }
 
-// The wall with the options it was loaded with (the protocol's run needs its posture and
-// reference state).
+// The wall with the options it was loaded with, as key texts (the protocol's run needs its
+// posture and reference state).
 struct Wall {
   simulate::WallModel model;
-  py::dict options;
+  Keys options;
 };
 
-Wall load_wall(const std::string& path, const py::dict& options) {
-  const simulate::SimulateSettings s = settings_from(options);
+Wall load_wall(const std::string& path, const py::object& options) {
   Wall w;
-  {
-    py::gil_scoped_release release;
-    w.model = simulate::load_wall(path, s.wall);
-  }
-  w.options = options;
+  w.options = keys_of(options);
+  const simulate::SimulateSettings s = settings_from({&w.options});
+  py::gil_scoped_release release;
+  w.model = simulate::load_wall(path, s.wall);
   return w;
 }
 
-py::dict run_cystometry(const Wall& wall, const py::dict& material, const py::dict& protocol) {
-  py::dict merged = wall.options;  // the wall's options, then the protocol's
-  for (const auto& [k, v] : protocol) merged[k] = v;
-  simulate::SimulateSettings s = settings_from(merged);
-  const simulate::MaterialSpec spec = material_from(material);
-  simulate::validate(s.protocol, s.run);
+// What run_cystometry runs: the wall's options, then the material's and the protocol's keys.
+struct Run {
+  simulate::SimulateSettings settings;
+  simulate::MaterialSpec material;
+};
+
+Run run_of(const Wall& wall, const py::object& material, const py::object& protocol) {
+  const std::optional<simulate::MaterialSpec> si = si_material(material);
+  const Keys material_keys = si ? Keys{} : keys_of(material), protocol_keys = keys_of(protocol);
+  Run run{settings_from({&wall.options, &material_keys, &protocol_keys}), {}};
+  try {
+    run.material = si ? *si : simulate::material_spec(run.settings.material);
+    simulate::resolve_material(run.material);
+    simulate::validate(run.settings.protocol, run.settings.run);
+  } catch (const Error& e) {
+    if (e.kind() == Error::Kind::Usage) throw py::value_error(e.what());
+    throw;
+  }
+  return run;
+}
+
+py::dict run_cystometry(const Wall& wall, const py::object& material, const py::object& protocol) {
+  const Run run = run_of(wall, material, protocol);
   simulate::CystometryResult r;
   {
     py::gil_scoped_release release;  // minutes of C++: other Python threads may run
-    r = simulate::run_cystometry(wall.model, spec, s.protocol, s.run);
+    r = simulate::run_cystometry(wall.model, run.material, run.settings.protocol, run.settings.run);
   }
   py::dict d;
   d["history"] = history_columns(r.history);
   d["summary"] = from_json(r.summary);
+  d["model_card"] = from_json(nlohmann::json(r.card));
   d["completed"] = r.completed;
   d["failure"] = r.failure;
   d["notes"] = r.notes;
   return d;
+}
+
+// The card of what run_cystometry would run, without running it.
+py::object model_card(const Wall& wall, const py::object& material, const py::object& protocol) {
+  const Run run = run_of(wall, material, protocol);
+  return from_json(nlohmann::json(simulate::planned_model_card(
+      wall.model, run.material, run.settings.protocol, run.settings.run)));
+}
+
+// The parameter catalogue (docs/parameters.md): each parameter's name, key, units, the
+// factor to SI, its default for each named material (SI; none where the law lacks it),
+// the range it accepts and the calibration's search.
+py::list parameter_catalogue() {
+  py::list list;
+  for (const simulate::PhysicalParameter& p : simulate::parameter_catalogue()) {
+    py::dict e;
+    e["name"] = p.name;
+    e["key"] = p.key;
+    e["old_key"] = p.old_key;
+    e["unit"] = p.unit;
+    e["si_unit"] = p.si_unit;
+    e["si_per_unit"] = p.si_per_unit;
+    e["accepts"] = p.range.describe(p.unit);
+    e["per_branch"] = p.per_branch;
+    py::dict defaults;
+    for (const simulate::NamedMaterial& m : simulate::named_materials()) {
+      if (!p.applies_to(m.name)) continue;
+      if (!p.is_material()) {
+        defaults[m.name.c_str()] = py::make_tuple(p.protocol_default() * p.si_per_unit);
+        continue;
+      }
+      const double mu = simulate::catalogue_parameter("mu").default_si(m.name).front();
+      defaults[m.name.c_str()] = py::cast(p.default_si(m.name, mu));
+    }
+    e["defaults_si"] = defaults;
+    e["fit_range"] = p.fit_range
+                         ? py::object(py::make_tuple(p.fit_range->lower, p.fit_range->upper))
+                         : py::object(py::none());
+    list.append(e);
+  }
+  return list;
 }
 
 py::dict recording_columns(const io::Recording& r) {
@@ -222,10 +312,10 @@ py::dict ics_parameters(const std::string& path) {
 // vesica-compare --calibrate PARAMETERS --measured RECORDING --mesh MESH with the other
 // options as compare's parameter keys; the result as the report's calibration JSON.
 py::object calibrate(const std::string& mesh, const std::string& measured,
-                     const std::string& parameters, const py::dict& options) {
+                     const std::string& parameters, const py::object& options) {
   compare::CompareOptions o;
   ParameterTable table = compare::parameter_table(o);
-  apply_parameters(table, options, "vesica-compare");
+  apply_parameters(table, keys_of(options), "vesica-compare");
   o.mesh = mesh;
   o.measured = measured;
   o.calibrate = parameters;
@@ -263,20 +353,26 @@ PYBIND11_MODULE(vesica, m) {
         "A surface (.vtp/.stl/.ply/.obj): points_mm, triangles, region");
   m.def("read_mesh", &read_mesh, py::arg("path"),
         "A vesica-mesh output (.vtu/.msh): nodes_mm, triangles, region, thickness_mm, tets");
-  m.def("load_wall", &load_wall, py::arg("path"), py::arg("options") = py::dict(),
+  m.def("load_wall", &load_wall, py::arg("path"), py::arg("options") = py::none(),
         "The wall as vesica-simulate loads it; options: its table keys (thickness_mm, "
         "residual_ml, reference, posture)");
-  m.def("run_cystometry", &run_cystometry, py::arg("wall"), py::arg("material"),
-        py::arg("protocol") = py::dict(),
-        "A cystometry of the wall: material {'name': .., SI parameters}, protocol: "
-        "vesica-simulate's parameter keys (capacity_ml, fill_rate_ml_min, ...). Returns "
-        "history (columns), summary, completed, failure, notes");
+  m.def("run_cystometry", &run_cystometry, py::arg("wall"), py::arg("material") = py::none(),
+        py::arg("protocol") = py::none(),
+        "A cystometry of the wall: material and protocol as vesica-simulate's parameter keys "
+        "(material, mu_kpa, contractility_kpa, ...; capacity_ml, fill_rate_ml_min, ...; none: "
+        "the defaults). No argument is changed. Returns history (columns), summary, "
+        "model_card, completed, failure, notes");
+  m.def("model_card", &model_card, py::arg("wall"), py::arg("material") = py::none(),
+        py::arg("protocol") = py::none(),
+        "The model card run_cystometry would run with these arguments, without running it");
+  m.def("parameter_catalogue", &parameter_catalogue,
+        "Every physical parameter: name, key, units, SI factor, defaults per material, range");
   m.def(
       "read_recording",
       [](const std::string& path) { return recording_columns(io::read_recording(path)); },
       py::arg("path"), "A urodynamic recording (CSV) as columns");
   m.def("calibrate", &calibrate, py::arg("mesh"), py::arg("measured"), py::arg("parameters"),
-        py::arg("options") = py::dict(),
+        py::arg("options") = py::none(),
         "Fits the model on the mesh to a recording, as vesica-compare --calibrate does: "
         "parameters 'mu,p_open,...', options: vesica-compare's parameter keys. Returns the "
         "fit (each parameter with its interval and identifiability, series, baselines)");

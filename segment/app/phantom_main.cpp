@@ -25,6 +25,8 @@ namespace {
 // The image is synthesised in memory (4-byte voxels, and the sub-sampling of every border
 // voxel): 2e8 voxels are 800 MB, about a 512 x 512 x 760 CT.
 constexpr double kMaxVoxels = 2e8;
+// What a slice's DICOM header and tags take beside its 16-bit pixels, generously.
+constexpr std::uintmax_t kDicomHeaderBytes = 8192;
 
 // The grid the spacing and the field of view make, refused before any work when too large.
 void check_grid_size(const seg::PhantomSpec& spec) {
@@ -80,6 +82,10 @@ int main(int argc, char** argv) {
     seg::DicomSeriesInfo info;
     {
       vesica::PhaseTimer t(record, "write");
+      // GDCM aborts on a write it cannot finish: the room for the series is checked first.
+      const auto size = image->GetLargestPossibleRegion().GetSize();
+      const std::uintmax_t slice = std::uintmax_t{2} * size[0] * size[1] + kDicomHeaderBytes;
+      vesica::require_room_for(output, slice * size[2], slice);
       vesica::write_atomically(output, [&](const std::filesystem::path& tmp) {
         info = seg::write_dicom_series(*image, tmp, seg::phantom_series_header(spec));
       });

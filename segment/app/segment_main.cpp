@@ -12,6 +12,7 @@
 #include "vesica/core/ParameterCli.h"
 #include "vesica/core/StageMain.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/io/LabelBorder.h"
 #include "vesica/io/LabelMap.h"
 #include "vesica/segment/BladderSegmenter.h"
 #include "vesica/segment/DicomSeries.h"
@@ -187,6 +188,16 @@ int main(int argc, char** argv) {
     if (is_mr && volume.echo_time_ms >= 0) s["echo_time_ms"] = volume.echo_time_ms;
     s["input_format"] = volume.format;
     s["steps"] = result.diagnostics;
+    // A bladder cut by the image's border (a scan that ends inside it) is a lower bound.
+    const auto border = vesica::io::border_contact(
+        result.label->GetBufferPointer(),
+        {static_cast<std::uint64_t>(size[0]), static_cast<std::uint64_t>(size[1]),
+         static_cast<std::uint64_t>(size[2])});
+    s["label_touches_image_border"] = border.inside > 0;
+    if (border.inside > 0) {
+      s["notes"].push_back(vesica::io::border_note(border));
+      vesica::log()->warn("{}", vesica::io::border_note(border));
+    }
     const auto written = record.write(common.report, vesica::default_manifest_path(common, output));
     if (common.json) std::printf("%s\n", written.dump(2).c_str());
     vesica::log()->info("bladder {:.1f} ml ({} voxels, {}) -> {}", stats.volume_ml,

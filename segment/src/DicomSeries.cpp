@@ -17,6 +17,7 @@
 #include "DicomFileCheck.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
+#include "vesica/io/VolumeHeaderCheck.h"
 
 namespace vesica::segment {
 namespace {
@@ -246,13 +247,19 @@ std::string DicomSeries::key() const {
   return series_key(uid);
 }
 
+// A series has a few thousand slices at most; a folder with far more files is not one.
+constexpr std::size_t kMaxFolderFiles = 20000;
+
 std::vector<DicomSeries> scan_dicom_folder(const std::filesystem::path& folder) {
   namespace fs = std::filesystem;
   if (!fs::is_directory(folder)) fail(folder.string(), "is not a folder");
   std::vector<std::string> files;
   std::map<std::string, bool> looks_dicom;
   for (const auto& e : fs::directory_iterator(folder)) {
-    if (!e.is_regular_file()) continue;
+    if (!e.is_regular_file()) continue;  // pipes and devices too: they never end
+    if (files.size() == kMaxFolderFiles)
+      fail(folder.string(), "holds more than " + std::to_string(kMaxFolderFiles) + " files",
+           "give the folder of one series");
     const std::string f = e.path().string();
     // Throws for a DICOM file cut short in its header, before GDCM could abort on it.
     looks_dicom[f] = check_dicom_file(f) == DicomFileKind::Part10 || has_dicom_extension(f);
@@ -330,6 +337,9 @@ ScanImage::Pointer read_dicom_series(const DicomSeries& series,
   if (!series.problem.empty()) fail(series.problem_file, series.problem, "export it again");
   check_slices_agree(series);
   check_even_spacing(series);
+  // Rows x Columns x slices within the budget before GDCM or ITK allocates what they claim.
+  io::require_voxel_budget(folder.string(), std::uint64_t{series.columns_rows[0]} *
+                                                series.columns_rows[1] * series.slices.size());
   std::vector<std::string> names;
   for (const auto& s : series.slices) {
     check_complete(s.file);

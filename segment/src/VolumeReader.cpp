@@ -10,8 +10,8 @@
 #include <itkNrrdImageIO.h>
 #include <vnl/algo/vnl_determinant.h>
 
-#include "NiftiCheck.h"
 #include "vesica/core/Error.h"
+#include "vesica/io/VolumeHeaderCheck.h"
 #include "vesica/segment/DicomSeries.h"
 
 namespace vesica::segment {
@@ -69,7 +69,7 @@ void read_volume_file(const std::filesystem::path& input, Volume& v) {
   if (v.format.empty())
     fail(input.string(), "unsupported input format",
          "give a DICOM folder or a .nii/.nii.gz/.nrrd/.mha volume");
-  if (v.format == "nifti") check_nifti_file(input);
+  io::check_volume_file(input);  // sizes and budget before ITK allocates what they claim
   auto reader = itk::ImageFileReader<ScanImage>::New();
   reader->SetFileName(input.string());
   reader->SetImageIO(io_for(v.format));

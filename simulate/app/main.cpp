@@ -3,12 +3,13 @@
 // urine on the tetrahedra. Its options are the simulate parameter table
 // (SimulateParameters.h). See docs/simulate.md and docs/navier-stokes.md.
 #include <filesystem>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
+#include "ModelCardRun.h"
 #include "VerificationStage.h"
 #include "vesica/core/AtomicOutput.h"
-#include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/ParameterCli.h"
@@ -17,6 +18,7 @@
 #include "vesica/core/StageRecord.h"
 #include "vesica/core/StagedOutputs.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/ModelCardJson.h"
 #include "vesica/simulate/SimulateParameters.h"
 #include "vesica/simulate/SimulateSettings.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
@@ -30,56 +32,16 @@ using namespace vesica::simulate;
 
 namespace {
 
-bool given(double value) {
-  return value != kMaterialDefault;
-}
-
-// The material as the library takes it (SI) from the table's clinical units: only the
-// parameters given, the rest is the named material's own (MaterialRegistry.h).
-MaterialSpec material_spec(const SimulateSettings& c) {
-  MaterialSpec spec{c.material, {}};
-  auto set = [&spec](const char* key, double value) {
-    if (given(value)) spec.params[key] = value;
-  };
-  auto set_kpa = [&spec](const char* key, double kpa) {
-    if (given(kpa)) spec.params[key] = units::pa_from_kpa(kpa);
-  };
-  set_kpa("mu", c.mu_kpa);
-  set_kpa("K", c.k_kpa);
-  const bool fibers = c.material != "neo-hookean" && c.material != "maxwell";
-  if (!fibers && (given(c.k1_kpa) || given(c.k2)))
-    usage_error("--k1-kpa/--k2 need a material with fibers (bladder, neobladder, fibers)");
-  set_kpa("k1", c.k1_kpa);
-  set("k2", c.k2);
-  spec.params["beta_vol"] = c.beta_vol;  // 9, or 0: K/2 (ln J)² (docs/physics.md §2.3)
-  if (c.beta.size() != c.tau_s.size())
-    usage_error("--beta and --tau-s need the same number of values");
-  if (!c.beta.empty() && c.material == "neo-hookean")
-    usage_error("--beta/--tau-s need a viscoelastic material (not neo-hookean)");
-  for (std::size_t a = 0; a < c.beta.size(); ++a) {
-    spec.params["beta" + std::to_string(a + 1)] = c.beta[a];
-    spec.params["tau" + std::to_string(a + 1)] = c.tau_s[a];
-  }
-  set_kpa("tone", c.tone_kpa);
-  set_kpa("contractility", c.detrusor_kpa);
-  set("optimal_stretch", c.optimal_stretch);
-  set("stretch_width", c.stretch_width);
-  set("hill_a", c.hill_a);
-  set("hill_vmax", c.hill_vmax_per_s);
-  return spec;
-}
-
 // What a checkpoint of this run is computed from (docs/simulate.md, "Checkpoint and
-// resume"): the mesh's content, the parameters (those that change results: not the
-// checkpoint interval) and the command line without --resume, which the runner compares.
-std::string checkpoint_identity(const std::string& mesh, nlohmann::json parameters, int argc,
-                                char** argv) {
-  parameters.erase("checkpoint_minutes");
+// resume"): the mesh's content, the model as its card says before the run, whether the
+// series is written, and the command line without --resume, which the runner compares.
+std::string checkpoint_identity(const WallModel& wall, const ModelCard& planned, bool series,
+                                int argc, char** argv) {
   nlohmann::json arguments = nlohmann::json::array();
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) != "--resume") arguments.push_back(argv[i]);
-  return nlohmann::json{{"inputs", {{{"path", mesh}, {"hash", content_hash(mesh)}}}},
-                        {"parameters", parameters},
+  return nlohmann::json{{"inputs", {{{"path", wall.source_file}, {"hash", wall.source_hash}}}},
+                        {"parameters", {{"model_card", planned}, {"series", series}}},
                         {"arguments", arguments}}
       .dump();
 }
@@ -92,27 +54,34 @@ int main(int argc, char** argv) {
   CommonOptions common;
   SimulateSettings c;
   ParameterTable table = parameter_table(c);
-  std::string mesh, output;
+  std::string mesh, output, card_file;
   bool resume = false;
   app.add_option("mesh", mesh, ".vtu from vesica-mesh (or its .msh), or a surface .vtp/.stl (mm)")
       ->required();
   app.add_option("-o,--output", output, "output folder: history.csv, series.pvd, summary.json")
       ->required();
   add_parameter_options(app, table);
+  app.add_option("--model-card", card_file,
+                 "run the model a card describes (fit/model.json of vesica-compare --calibrate, "
+                 "or a summary.json): no model parameter beside it (docs/simulate.md)")
+      ->group("Parameters");
   app.add_flag("--resume", resume,
                "continue an interrupted run from its checkpoint (docs/simulate.md)");
   add_common_options(app, common);
 
   return run_stage_main(app, argc, argv, common, [&]() {
     StageRecord record("vesica-simulate", argc, argv);
+    std::optional<ModelCard> card;
+    if (!card_file.empty()) card = settings_from_card_file(card_file, app, table, c);
     ProtocolSettings& p = c.protocol;
     RunOptions& options = c.run;
     c.wall.posture = p.posture = c.posture;
     options.reference = c.wall.reference;
     options.output_dir = output;
     validate(p, options);  // before reading anything
-    const MaterialSpec spec = material_spec(c);
+    const MaterialSpec spec = card ? material_spec(card->material) : material_spec(c.material);
     make_material(spec);                    // reject bad parameters before reading anything
+    check_febio_export(c, spec);            // and what FEBio cannot express
     if (is_verification(c.verification)) {  // issue 25: P–λ of a closed wall
       record.parameters() = table.values();
       record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
@@ -123,14 +92,17 @@ int main(int argc, char** argv) {
       PhaseTimer timer(record, "read");
       wall = load_wall(mesh, c.wall);
     }
+    if (card) check_card_mesh(*card, wall);
     record.add_input(mesh);
-    export_febio_if_asked(c, wall, spec, record);  // issue 25
-    Progress progress("simulate");                 // silent with --json or off a terminal
+    Progress progress("simulate");  // silent with --json or off a terminal
     options.on_progress = [&](const std::string& step, double f) { progress.update(step, f); };
     record.parameters() = table.values();
     record.parameters()["material_si"] = {{"name", spec.name}, {"params", spec.params}};
+    if (card) record.parameters()["model_card"] = card_file;
+    if (card) record.add_input(card_file);
     options.checkpoints.file = checkpoint_path_for_manifest(default_manifest_path(common, output));
-    options.checkpoints.identity = checkpoint_identity(mesh, record.parameters(), argc, argv);
+    options.checkpoints.identity = checkpoint_identity(
+        wall, planned_model_card(wall, spec, p, options), options.write_series, argc, argv);
     options.checkpoints.resume = resume;
     // The output folder is written whole under a temporary name and replaces the earlier
     // one only when the run completed; a failed run's partial results are kept only where
@@ -171,6 +143,7 @@ int main(int argc, char** argv) {
       commit_staged_outputs();  // nothing was there: the partial results are the user's
       fail(mesh, result.failure, "results up to that point are in " + output);
     }
+    export_febio_if_asked(c, wall, result, record);           // what ran, as FEBio input
     record.write("", default_manifest_path(common, output));  // .vesica/<folder>.manifest.json
     std::error_code ec;                                       // a finished run needs no checkpoint
     fs::remove_all(options.checkpoints.file.parent_path(), ec);

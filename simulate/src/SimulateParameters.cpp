@@ -1,14 +1,21 @@
 // vesica-simulate's parameter table (SimulateParameters.h): one entry per option, bound to
-// the fields of SimulateSettings, whose initialisers are the defaults.
+// the fields of SimulateSettings, whose initialisers are the defaults; the physical
+// parameters' entries from the parameter catalogue, whose defaults the material's are.
 #include "vesica/simulate/SimulateParameters.h"
 
+#include <algorithm>
+
 #include "verification/VerificationParameters.h"
+#include "vesica/core/Error.h"
+#include "vesica/core/Log.h"
+#include "vesica/simulate/ParameterCatalogue.h"
 #include "vesica/simulate/SimulateSettings.h"
 
 namespace vesica::simulate {
 namespace {
 
 constexpr std::size_t kMaxBranches = 5;  // Maxwell branches a material takes (docs/physics.md §2)
+const NumberRange kVolume = NumberRange::greater_than(0).at_most(5000);  // ml
 
 // "a,b,c": up to kMaxBranches numbers, each in `range`.
 std::vector<double> list_from_text(const std::string& text, const NumberRange& range,
@@ -31,67 +38,122 @@ void add_list(ParameterTable& t, const std::string& name, std::vector<double>& f
       [&field] { return nlohmann::json(field); });
 }
 
-// A material parameter in `range`, or "auto" for the named material's own value.
-void add_material_number(ParameterTable& t, const std::string& name, double& field,
-                         const std::string& unit, NumberRange range, const std::string& help) {
-  t.number_or_word(name, field, kMaterialDefault, unit,
-                   range.or_word("auto", "the material's own (docs/simulate.md)"), help);
+// An earlier key of a parameter, still accepted: it sets the parameter and says its name.
+void add_old_key(ParameterTable& t, const PhysicalParameter& p, Parameter& current) {
+  Parameter* target = &current;  // the table's entries keep their address (a deque)
+  const std::string old_key = p.old_key, key = p.key;
+  t.custom(
+      old_key, p.unit, "as " + key, "the earlier name of " + key + ": give " + key,
+      [target, old_key, key](const std::string& text) {
+        vesica::log()->warn("{} is the earlier name of {}: give {}", old_key, key, key);
+        target->assign(text);
+      },
+      [] { return nlohmann::json(); });
 }
 
-void add_material_entries(SimulateSettings& s, ParameterTable& t) {
-  t.choice("material", s.material, {"bladder", "neobladder", "neo-hookean", "maxwell", "fibers"},
+// The materials a parameter applies to, for its help: " (bladder, neobladder, fibers)",
+// nothing when it applies to all.
+std::string applies_text(const PhysicalParameter& p) {
+  std::string names;
+  std::size_t count = 0;
+  for (const NamedMaterial& m : named_materials())
+    if (p.applies_to(m.name)) names += (count++ ? ", " : "") + m.name;
+  return count < named_materials().size() ? " (" + names + ")" : "";
+}
+
+// "--contractility-kpa" of "contractility_kpa".
+std::string option_of(const std::string& key) {
+  std::string option = "--" + key;
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+}  // namespace
+
+void add_material_entries(MaterialChoice& m, ParameterTable& t) {
+  std::vector<std::string> names;
+  for (const NamedMaterial& n : named_materials()) names.push_back(n.name);
+  t.choice("material", m.name, names,
            "wall material (docs/physics.md §2): the normal adult detrusor, an ileal neobladder, "
            "or a plain law");
-  add_material_number(
-      t, "mu_kpa", s.mu_kpa, "kPa",
-      NumberRange::at_least(0.1).at_most(100).because(
-          "the calibration's range; a stiffer wall barely moves under cystometric pressures"),
-      "shear modulus mu of the matrix");
-  add_material_number(t, "k_kpa", s.k_kpa, "kPa", NumberRange::at_least(0.1).at_most(1e6),
-                      "bulk modulus K (material default 1000 mu, nearly incompressible; the "
-                      "thesis's 10 kPa dilates and peaks near 1.5x the residual volume)");
-  add_material_number(t, "k1_kpa", s.k1_kpa, "kPa", NumberRange::greater_than(0).at_most(1000),
-                      "fiber stiffness k1 (bladder, neobladder, fibers)");
-  add_material_number(t, "k2", s.k2, "-", NumberRange::greater_than(0).at_most(100),
-                      "fiber exponent k2 (bladder, neobladder, fibers)");
-  add_list(t, "beta", s.beta, "-", NumberRange::at_least(0).at_most(50),
-           "Maxwell branch strengths (none: the material's branches)");
-  add_list(t, "tau_s", s.tau_s, "s", NumberRange::at_least(1e-6).at_most(1000),
-           "Maxwell relaxation times, one per beta");
-  add_material_number(t, "tone_kpa", s.tone_kpa, "kPa", NumberRange::at_least(0).at_most(100),
-                      "detrusor tone: nominal active fiber stress at rest");
-  add_material_number(t, "detrusor_kpa", s.detrusor_kpa, "kPa",
-                      NumberRange::at_least(0).at_most(1000),
-                      "detrusor contractility: nominal active fiber stress added at full "
-                      "activation and optimal length");
-  add_material_number(t, "optimal_stretch", s.optimal_stretch, "-",
-                      NumberRange::at_least(0.5).at_most(5),
-                      "fiber stretch (from the reference) of the detrusor's greatest force");
-  add_material_number(t, "stretch_width", s.stretch_width, "-",
-                      NumberRange::at_least(0.1).at_most(5),
-                      "width of the detrusor's length-tension curve");
-  add_material_number(t, "hill_a", s.hill_a, "-", NumberRange::at_least(0.05).at_most(5),
-                      "Hill's a/T0: curvature of the detrusor's force-velocity relation");
-  add_material_number(t, "hill_vmax_per_s", s.hill_vmax_per_s, "1/s",
-                      NumberRange::at_least(1e-3).at_most(10),
-                      "the detrusor's unloaded shortening rate");
+  for (const PhysicalParameter& p : parameter_catalogue()) {
+    if (!p.is_material()) continue;
+    const std::string help = p.help + (p.per_branch ? "" : applies_text(p));
+    if (p.per_branch) {
+      add_list(t, p.key, m.branches[p.name], p.unit, p.range, help);
+      continue;
+    }
+    double& field = m.values.emplace(p.name, kMaterialDefault).first->second;
+    Parameter& entry = t.number_or_word(
+        p.key, field, kMaterialDefault, p.unit,
+        NumberRange(p.range).or_word("auto", "the material's own (docs/parameters.md)"), help);
+    if (!p.old_key.empty()) add_old_key(t, p, entry);
+  }
 }
 
-void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
-  WallOptions& w = s.wall;
-  ProtocolSettings& p = s.protocol;
+void add_drive_entries(ProtocolSettings& protocol, ParameterTable& t) {
+  t.choice<VoidingDrive>(
+      "drive", protocol.drive,
+      {{"detrusor", VoidingDrive::Detrusor}, {"straining", VoidingDrive::Straining}},
+      "what voids the bladder: the detrusor's contraction or abdominal straining");
+  for (const PhysicalParameter& p : parameter_catalogue())
+    if (!p.is_material()) t.number(p.key, protocol.*(p.field), p.unit, p.range, p.help);
+}
+
+void add_wall_reference_entries(WallOptions& w, ParameterTable& t) {
   t.number("thickness_mm", w.thickness_mm, "mm", NumberRange::at_least(0.1).at_most(30),
            "wall thickness where the mesh gives none");
-  t.choice<ReferenceState>(
-      "reference", w.reference,
-      {{"scale", ReferenceState::Scale}, {"prestress", ReferenceState::Prestress}},
-      "stress-free reference: the image scaled to residual_ml, or the "
-      "image prestressed at image_pressure_cmh2o");
   t.number("residual_ml", w.residual_ml, "ml", NumberRange::at_least(1).at_most(5000),
            "stress-free (residual) volume of the scaled reference");
   t.number("residual_fraction", w.residual_fraction, "-",
            NumberRange::greater_than(0).at_most(1).or_value(0, "use residual_ml"),
            "stress-free volume as a fraction of the mesh's (a neobladder's retracted tissue)");
+}
+
+void add_start_entry(ProtocolSettings& p, ParameterTable& t) {
+  t.number("start_ml", p.start_ml, "ml", kVolume, "volume at the start of filling");
+}
+
+void add_model_entries(SimulateSettings& s, ParameterTable& t) {
+  add_material_entries(s.material, t);
+  add_wall_reference_entries(s.wall, t);
+  add_start_entry(s.protocol, t);
+  add_drive_entries(s.protocol, t);
+}
+
+MaterialSpec material_spec(const MaterialChoice& m) {
+  MaterialSpec spec{m.name, {}};
+  for (const PhysicalParameter& p : parameter_catalogue()) {
+    if (!p.is_material() || !m.given(p.name)) continue;
+    if (!p.applies_to(m.name))
+      usage_error(option_of(p.key) + " does not apply to material " + m.name,
+                  "it applies to" + applies_text(p));
+    if (!p.per_branch) spec.params[p.material_key] = m.values.at(p.name) * p.si_per_unit;
+  }
+  const auto list = [&m](const char* name) {
+    const auto it = m.branches.find(name);
+    return it == m.branches.end() ? std::vector<double>() : it->second;
+  };
+  const std::vector<double> beta = list("beta"), tau = list("tau");
+  if (beta.size() != tau.size()) usage_error("--beta and --tau-s need the same number of values");
+  for (std::size_t a = 0; a < beta.size(); ++a) {
+    spec.params["beta" + std::to_string(a + 1)] = beta[a];
+    spec.params["tau" + std::to_string(a + 1)] = tau[a];
+  }
+  return spec;
+}
+
+namespace {
+
+void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
+  WallOptions& w = s.wall;
+  ProtocolSettings& p = s.protocol;
+  add_wall_reference_entries(w, t);
+  t.choice<ReferenceState>(
+      "reference", w.reference,
+      {{"scale", ReferenceState::Scale}, {"prestress", ReferenceState::Prestress}},
+      "stress-free reference: the image scaled to residual_ml, or the "
+      "image prestressed at image_pressure_cmh2o");
   t.number("image_pressure_cmh2o", p.image_pressure_cmh2o, "cmH2O",
            NumberRange::at_least(0).at_most(200),
            "pressure of the imaged bladder (reference prestress)");
@@ -117,9 +179,8 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
 }
 
 void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
-  const NumberRange volume = NumberRange::greater_than(0).at_most(5000);
-  t.number("start_ml", p.start_ml, "ml", volume, "volume at the start of filling");
-  t.number("capacity_ml", p.capacity_ml, "ml", volume, "cystometric capacity (end of filling)");
+  add_start_entry(p, t);
+  t.number("capacity_ml", p.capacity_ml, "ml", kVolume, "cystometric capacity (end of filling)");
   t.number("fill_limit_cmh2o", p.fill_limit_cmh2o, "cmH2O",
            NumberRange::greater_than(0).at_most(200).or_value(0, "fill to capacity_ml"),
            "filling also ends when Pdet reaches this (a study's pressure limit)");
@@ -134,37 +195,7 @@ void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
   t.number("pabd_cmh2o", p.pabd_cmh2o, "cmH2O", NumberRange::at_least(-20).at_most(200),
            "resting abdominal pressure");
   t.flag_off("no_void", p.void_after_fill, "stop after filling (and hold)");
-  t.number("p_open_cmh2o", p.p_open_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(300),
-           "urethral opening pressure (Pves)");
-  t.number("p_close_cmh2o", p.p_close_cmh2o, "cmH2O", NumberRange::at_least(0).at_most(300),
-           "urethral closing pressure (Pves), at most p_open_cmh2o");
-  t.number("urethra_half_open_cmh2o", p.urethra_half_open_cmh2o, "cmH2O",
-           NumberRange::at_least(0).at_most(100),
-           "collapsible urethra: pressure above closing at which its lumen is about half "
-           "open (0: rigid, the quadratic law)");
-  t.number("urethra_recovery_half", p.urethra_recovery_half, "-",
-           NumberRange::greater_than(0).at_most(1),
-           "the sphincter's recovery: the voided fraction at which the urethra's closing "
-           "pressure has risen half-way back to p_open_cmh2o (0.5: linearly; 1: no recovery)");
-  t.number("r1", p.r1_cmh2o_s_per_ml, "cmH2O*s/ml", NumberRange::at_least(0).at_most(100),
-           "urethral linear resistance R1");
-  t.number("r2", p.r2_cmh2o_s2_per_ml2, "cmH2O*s2/ml2", NumberRange::at_least(0).at_most(100),
-           "urethral quadratic resistance R2");
-  t.choice<VoidingDrive>(
-      "drive", p.drive,
-      {{"detrusor", VoidingDrive::Detrusor}, {"straining", VoidingDrive::Straining}},
-      "what voids the bladder: the detrusor's contraction or abdominal straining");
-  t.number("straining_kpa", p.straining_kpa, "kPa", NumberRange::at_least(0).at_most(50),
-           "abdominal straining pressure at full activation (drive straining)");
-  t.number("activation_delay_s", p.activation_delay_s, "s", NumberRange::at_least(0).at_most(120),
-           "latency from the end of filling to the drive's activation (0: at once)");
-  t.number("activation_onset_s", p.activation_onset_s, "s", NumberRange::at_least(0).at_most(60),
-           "time constant of the drive's activation (0: at once)");
-  t.number("activation_plateau_s", p.activation_plateau_s, "s",
-           NumberRange::at_least(0).at_most(3600),
-           "how long the drive stays activated from the start of voiding");
-  t.number("activation_fade_s", p.activation_fade_s, "s", NumberRange::at_least(0).at_most(60),
-           "time constant of the drive's relaxation after the plateau (0: at once)");
+  add_drive_entries(p, t);
   t.number("stop_flow_ml_s", p.stop_flow_ml_s, "ml/s", NumberRange::greater_than(0).at_most(50),
            "voiding ends when the flow falls below this");
   t.number("max_void_s", p.max_void_s, "s", NumberRange::greater_than(0).at_most(3600),
@@ -208,7 +239,7 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
 
 ParameterTable parameter_table(SimulateSettings& s) {
   ParameterTable t("simulate");
-  add_material_entries(s, t);
+  add_material_entries(s.material, t);
   add_wall_entries(s, t);
   add_protocol_entries(s.protocol, t);
   add_run_entries(s.run, t);

@@ -14,6 +14,8 @@
 
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/io/BladderScale.h"
+#include "vesica/io/LabelBorder.h"
 
 namespace vesica::surface {
 namespace {
@@ -105,6 +107,10 @@ LabelCleanup clean_label(const LabelSanityOptions& options, const std::string& f
     usage_error("--component must be only or largest, got '" + options.component + "'");
   const PaddedGrid grid(label);
   const double voxel_ml = units::ml_from_mm3(label.voxel_volume_mm3());
+  const std::array<std::uint64_t, 3> size = {static_cast<std::uint64_t>(label.size[0]),
+                                             static_cast<std::uint64_t>(label.size[1]),
+                                             static_cast<std::uint64_t>(label.size[2])};
+  io::refuse_inverted_label(io::border_contact(label.inside.data(), size), file);
   LabelCleanup cleanup;
   vtkSmartPointer<vtkImageData> image = padded_image(label, grid);
   const Regions pieces = connected_regions(image, 1);
@@ -142,6 +148,10 @@ LabelCleanup clean_label(const LabelSanityOptions& options, const std::string& f
                             ml_text(static_cast<double>(cleanup.filled_voxels) * voxel_ml) +
                             " of cavities enclosed by the label");
   const double kept_ml = static_cast<double>(kept) * voxel_ml;
+  io::check_bladder_volume(kept_ml, "the bladder label", file);
+  const io::BorderContact border = io::border_contact(label.inside.data(), size);
+  cleanup.touches_border = border.inside > 0;
+  if (cleanup.touches_border) cleanup.notes.push_back(io::border_note(border));
   if (kept < kMinVoxels || kept_ml < options.min_volume_ml)
     fail(file,
          "the bladder label is too small: " + ml_text(kept_ml) + " in " + std::to_string(kept) +

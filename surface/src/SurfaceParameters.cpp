@@ -3,6 +3,7 @@
 #include <limits>
 #include <sstream>
 
+#include "vesica/core/SideOutputNames.h"
 #include "vesica/surface/SurfaceSettings.h"
 
 namespace vesica::surface {
@@ -165,6 +166,11 @@ ParameterTable parameter_table(SurfaceSettings& s) {
   add_remeshing_entries(o, t);
   add_region_entries(o.regions, t);
   t.flag("stl_ascii", o.write.stl_ascii, "write ASCII instead of binary STL");
+  t.beside_output(
+      "the region tags, bladder.ply.regions.json beside bladder.ply (none beside a .vtp)",
+      [](const std::string& output) {
+        return surface_needs_sidecar(output) ? regions_sidecar_name(output) : "";
+      });
   return t;
 }
 

@@ -8,6 +8,7 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
+#include "vesica/core/SideOutputNames.h"
 #include "vesica/core/Units.h"
 #include "vesica/surface/LabelVolume.h"
 #include "vesica/surface/Morph.h"
@@ -59,6 +60,7 @@ TriangleSurface surface_from_label(const SurfaceStageOptions& options, StageReco
   }
   const LabelCleanup cleanup = clean_label(options.label_sanity, options.input, label);
   record.summary()["label_components"] = cleanup.components;
+  record.summary()["label_touches_image_border"] = cleanup.touches_border;
   add_notes(cleanup.notes, record.summary());
   const double voxel_volume_mm3 = label.voxel_count() * label.voxel_volume_mm3();
   record.summary()["label_voxel_count"] = label.voxel_count();
@@ -259,7 +261,7 @@ TriangleSurface run_surface_stage(const SurfaceStageOptions& options, StageRecor
     write_surface(surface, options.output, options.write);
   }
   record.add_output(options.output);
-  if (std::filesystem::path(options.output).extension() != ".vtp")
+  if (surface_needs_sidecar(options.output))
     record.add_output(regions_sidecar_path(options.output));
   return surface;
 }

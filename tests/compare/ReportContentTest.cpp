@@ -1,8 +1,8 @@
 // What the report says, checked against hand-worked values: the pressure-flow criteria of
 // the patient's sex (a woman gets BOOIf and no male class, a man BOOI and BCI), the sex
 // and age read from the recording's header or --sex, the measured fill rate and start of
-// filling, and a simulated straining void shown as a phase with its model settings, never
-// as artefacts.
+// filling, and a simulated void shown as a phase with its model card (the drive it names
+// is the card's, never guessed), never as artefacts.
 #include <cmath>
 #include <fstream>
 
@@ -15,6 +15,7 @@
 #include "vesica/compare/recording/RecordingHeader.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/io/RecordingReader.h"
+#include "vesica/simulate/ModelCardJson.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::test;
@@ -37,6 +38,27 @@ Report compare(const std::string& name, const std::string& args, const std::stri
 
 std::string measured(const std::string& csv) {
   return "--measured " + compare_data(csv).string();
+}
+
+// A model card of a straining void, as vesica-simulate writes it into summary.json: the
+// thesis's neo-Hookean wall (mu 3 kPa) strained at 4 kPa, whose last 50 ml went on as the
+// wall's sphere-equivalent.
+std::string straining_summary() {
+  namespace vs = vesica::simulate;
+  vs::ModelCard card;
+  card.material.name = "neo-hookean";
+  card.material.mu_pa = 3e3;
+  card.material.k_pa = 3e6;
+  card.material.beta_vol = 9;
+  card.protocol.drive = vs::VoidingDrive::Straining;
+  card.protocol.straining_kpa = 4.0;
+  card.protocol.capacity_ml = 350.0;
+  card.mean_thickness_mm = 3.0;
+  card.reference_volume_ml = 50.0;
+  card.mesh = {"missing.msh", "sha256:0", 1710, 857, 0, 6.0};
+  card.hand_overs = {{1, 0, 50.0, 365.5, "the wall could not take a voiding step"}};
+  const nlohmann::json summary = {{"version", "0.1.0"}, {"model_card", card}};
+  return summary.dump();
 }
 
 }  // namespace
@@ -115,10 +137,9 @@ TEST(ReportContent, FillRateAndStartOfFillingFromTheInfusedVolume) {
   EXPECT_NEAR(f.start_s, 45 - 25 / rate, 1e-9);       // 19.2 s: the infusion began there
 }
 
-TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
+TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsModelCardNotAnArtefact) {
   // A history voided by straining: Pabd 4 -> 44 cmH2O, Pdet falling below zero at the end,
-  // beside the summary.json and manifest vesica-simulate leaves (parameters from its table,
-  // the material's SI parameters in material_si).
+  // beside the summary.json vesica-simulate leaves with its model card.
   const fs::path dir = scratch_dir("compare-content-straining");
   fs::create_directories(dir / "sim");
   {
@@ -132,47 +153,78 @@ TEST(ReportContent, SimulatedStrainingIsAPhaseWithItsSettingsNotAnArtefact) {
       h << 360 + k << ",300," << 350 - 60 * k << ',' << 44 + pdet[k - 1] << ",44," << pdet[k - 1]
         << ",60," << 60 * k << '\n';
   }
-  std::ofstream(dir / "sim/summary.json")
-      << R"json({"version": "0.1.0", "triangles": 1710, "nodes": 857,
-             "outlet": {"p_open_cmh2o": 20, "r1_cmh2o_s_per_ml": 0.2, "r2_cmh2o_s2_per_ml2": 0.05},
-             "voiding_tail": {"model": "sphere-equivalent (level 0)", "from_ml": 50,
-                              "pressure_scale": 0.9, "wall_failure": "no convergence"}})json";
-  const nlohmann::json manifest = {
-      {"tool", "vesica-simulate"},
-      {"finished_utc", "2026-01-02T03:04:05Z"},
-      {"outputs",
-       {{{"path", "sim/history.csv"}, {"hash", vesica::content_hash(dir / "sim/history.csv")}}}},
-      {"parameters",
-       {{"material", "neo-hookean"},
-        {"material_si",
-         {{"name", "neo-hookean"}, {"params", {{"mu", 3000.0}, {"K_per_mu", 1000.0}}}}},
-        {"start_ml", 50.0},
-        {"capacity_ml", 350.0},
-        {"fill_rate_ml_min", 50.0},
-        {"straining_kpa", 4.0},
-        {"detrusor_kpa", 0.0},
-        {"level", 1}}},
-      {"inputs", {{{"path", "missing.msh"}}}},
-      {"invocation", {"missing.msh", "-o", "sim", "--thickness-mm", "3"}}};
-  // where vesica-simulate run alone keeps it: .vesica/<output folder>.manifest.json
-  fs::create_directories(dir / ".vesica");
-  std::ofstream(dir / ".vesica/sim.manifest.json") << manifest.dump(2);
+  std::ofstream(dir / "sim/summary.json") << straining_summary();
 
   const Report r = compare("straining-run", "--simulated " + (dir / "sim/history.csv").string());
   EXPECT_TRUE(r.metrics["simulated"]["artefacts"].empty()) << r.metrics["simulated"]["artefacts"];
   EXPECT_EQ(r.html.find("artefact rows"), std::string::npos);
-  const auto& s = r.metrics["simulation_settings"];
-  EXPECT_EQ(s["manifest"], (dir / ".vesica/sim.manifest.json").string());
-  EXPECT_EQ(s["material_parameters"]["mu"], "3 kPa");
-  EXPECT_EQ(s["thickness_mm"], 3.0);
-  EXPECT_EQ(s["voiding_drive"], "abdominal straining 4 kPa (40.79 cmH2O)");  // 4000/98.0665
-  EXPECT_EQ(s["p_open_cmh2o"], 20.0);
-  EXPECT_EQ(s["triangles"], 1710);
+  const auto& m = r.metrics["simulated_model"];
+  EXPECT_EQ(m["voiding_drive"], "abdominal straining 4 kPa (40.79 cmH2O)");  // 4000/98.0665
+  EXPECT_EQ(m["model_card"]["material"]["mu_pa"], 3000.0);
+  EXPECT_EQ(m["model_card"]["mesh"]["triangles"], 1710);
   EXPECT_NE(r.html.find("voiding by abdominal straining"), std::string::npos);
-  EXPECT_NE(r.html.find("neo-Hookean"), std::string::npos);
+  EXPECT_NE(r.html.find("neo-hookean: &mu; = 3 kPa"), std::string::npos);
   EXPECT_NE(r.html.find("1710 wall triangles"), std::string::npos);
   // The wall handed the last 50 ml of its voiding to its sphere-equivalent: the reader is told.
-  EXPECT_EQ(s["voiding_tail_from_ml"], 50.0);
-  EXPECT_NE(r.html.find("from 50 ml on, the wall's sphere-equivalent (level 0)"),
+  EXPECT_NE(r.html.find("level 1 -&gt; 0 at 50 ml"), std::string::npos);
+}
+
+TEST(ReportContent, WithoutAModelCardTheModelIsUnknownNotGuessed) {
+  const fs::path dir = scratch_dir("compare-content-no-card-run");
+  fs::create_directories(dir / "sim");
+  std::ofstream(dir / "sim/history.csv")
+      << "time_s,infused_ml,volume_ml,pves_cmh2o,pabd_cmh2o,pdet_cmh2o,flow_ml_s,voided_ml\n"
+         "0,0,50,2,0,2,0,0\n60,50,100,3,0,3,0,0\n61,50,90,40,30,10,10,10\n";
+  const Report r = compare("no-card", "--simulated " + (dir / "sim/history.csv").string());
+  EXPECT_TRUE(r.metrics["simulated_model"]["model_card"].is_null());
+  EXPECT_NE(r.html.find("no model card: no summary.json beside history.csv"), std::string::npos);
+  EXPECT_EQ(r.html.find("straining"), std::string::npos);  // Pabd rose, but nothing is guessed
+}
+
+namespace {
+
+// vesica-simulate on a 50 ml sphere with `model`, then vesica-compare of its history against
+// the shared normal recording, as the demo does: the report page.
+std::string simulated_report(const std::string& name, const std::string& model) {
+  const fs::path dir = scratch_dir("compare-content-" + name);
+  const std::string bin = bin_dir().string();
+  CommandResult r = run_command(bin + "/vesica-surface -o " + (dir / "sphere.vtp").string() +
+                                " --shape sphere --volume-ml 50 --edge-mm 8 --outlet auto --json");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  r = run_command(bin + "/vesica-simulate " + (dir / "sphere.vtp").string() + " -o " +
+                  (dir / "sim").string() + " --capacity-ml 150 --no-series " + model);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return compare(name + "-report", measured("normal-female-34y.csv") + " --simulated " +
+                                       (dir / "sim/history.csv").string())
+      .html;
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+// The demo's model (the default bladder wall voided by its detrusor) is named as voided by
+// the detrusor wherever the page names the drive: the model card, the trace's band and the
+// plots' captions; a straining-voided neobladder is named as straining in the same places.
+TEST(ReportContent, TheDetrusorVoidedDemoAndAStrainedRunNameTheirOwnDrive) {
+  const std::string detrusor = simulated_report("detrusor", "--material bladder --drive detrusor");
+  EXPECT_NE(detrusor.find("Voiding driven by</th><td>detrusor contraction, contractility 100 kPa"),
             std::string::npos);
+  EXPECT_GE(count(detrusor, "voiding by detrusor contraction"), 3u);  // band and two captions
+  EXPECT_EQ(detrusor.find("abdominal straining"), std::string::npos);
+  EXPECT_EQ(detrusor.find("stays passive"), std::string::npos);
+
+  const std::string straining = simulated_report(
+      "straining",
+      "--material neobladder --residual-ml 50 --drive straining --straining-kpa 3.5");
+  EXPECT_NE(straining.find("Voiding driven by</th><td>abdominal straining 3.5 kPa (35.69 cmH2O)"),
+            std::string::npos);
+  EXPECT_GE(count(straining, "voiding by abdominal straining"), 3u);
+  EXPECT_NE(straining.find("stays passive"), std::string::npos);  // the dagger's note
+  EXPECT_EQ(straining.find("voiding by detrusor contraction"), std::string::npos);
+  EXPECT_EQ(straining.find("Voiding driven by</th><td>detrusor"), std::string::npos);
 }

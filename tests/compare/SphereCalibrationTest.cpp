@@ -1,11 +1,18 @@
 // Calibration against a known truth: a "measured" filling curve simulated on a spherical
 // wall with mu = 3 kPa must give back mu = 3 kPa when the fit starts from 6 kPa, with a
 // confidence interval that contains it and a near-zero residual — through the two stages
-// (the coarse sphere surrogate, then the wall) and on the wall alone.
+// (the coarse sphere surrogate, then the wall) and on the wall alone. And the calibration's
+// names walked against the parameter catalogue for each named material.
 #include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
 
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/calibration/Calibration.h"
+#include "vesica/simulate/ParameterCatalogue.h"
+#include "vesica/simulate/protocol/Cystometry.h"
 #include "vesica/simulate/wall/SphereMesh.h"
 
 namespace vc = vesica::compare;
@@ -69,4 +76,34 @@ TEST(SphereCalibration, RecoversTheShearModulusOfASimulatedCurveOnTheWallAlone) 
   vc::CalibrationProblem pb = sphere_problem();
   pb.use_surrogate = false;
   expect_recovered(vc::calibrate(pb).result);
+}
+
+// Issue 38: for each named material, every catalogue parameter a calibration fits is a
+// calibration name with the catalogue's unit and search range, and a value set through that
+// name (the geometric mean of its range, in its unit) is the value the model card shows in
+// SI, the catalogue's factor applied once.
+TEST(SphereCalibration, EachFittedNameSetsTheCatalogueValueOnTheCardForEachMaterial) {
+  const vs::WallModel wall = vs::sphere_wall(0.02285, 3e-3, 6);
+  std::size_t checked = 0;
+  for (const vs::NamedMaterial& material : vs::named_materials()) {
+    for (const vs::PhysicalParameter& p : vs::parameter_catalogue()) {
+      if (!p.fitted() || !p.applies_to(material.name)) continue;
+      SCOPED_TRACE(material.name + " " + p.name);
+      const vc::ModelParameter c = vc::model_parameter(p.name);
+      EXPECT_EQ(c.fit.unit, p.unit);
+      EXPECT_EQ(c.fit.lower, p.fit_range->lower);
+      EXPECT_EQ(c.fit.upper, p.fit_range->upper);
+      const double value = std::sqrt(p.fit_range->lower * p.fit_range->upper);
+      vs::MaterialSpec spec{material.name, {}};
+      vs::ProtocolSettings protocol;
+      c.apply(value, spec, protocol);
+      const vs::ModelCard card = vs::planned_model_card(wall, spec, protocol, vs::RunOptions{});
+      const std::vector<double> si = vs::card_value_si(card, p);
+      ASSERT_FALSE(si.empty());
+      EXPECT_NEAR(si.front(), value * p.si_per_unit, 1e-12 * value * p.si_per_unit);
+      ++checked;
+    }
+  }
+  // The urethra's and the drive's nine for every material, and the wall's where they apply.
+  EXPECT_GT(checked, 5u * 9u);
 }

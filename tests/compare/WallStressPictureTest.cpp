@@ -108,6 +108,32 @@ TEST(WallStressPicture, ColourBarSpansTheFramesMaximumPrincipalStress) {
   EXPECT_LT(lo, hi);
 }
 
+// The renderer works in a folder only vesica-compare made (mkdtemp), and removes it (the PDF
+// is left out: chromium keeps files of its own in $TMPDIR): a folder another user made in $TMPDIR under any name, holding a link to a file of
+// the user's, is neither used nor written through (issue 37).
+TEST(WallStressPicture, ARunLeavesTheTemporaryFolderAsItFoundIt) {
+  const fs::path dir = scratch_dir("compare-temporary");
+  fs::remove_all(dir);
+  fs::create_directories(dir / "tmp");
+  write_stress_sphere(dir / "frame.vtu");
+  std::ofstream(dir / "notes.txt") << "a user's notes";
+  // Another user's folder, under the name the picture used to take (its PID), with a link
+  // where the renderer's log went.
+  for (const char* name : {"vesica-compare-1", "vesica-compare-chromium-1"}) {
+    fs::create_directories(dir / "tmp" / name);
+    fs::create_symlink(dir / "notes.txt", dir / "tmp" / name / "render.log");
+  }
+  const auto before = std::distance(fs::recursive_directory_iterator(dir / "tmp"), {});
+  const auto run = run_command("TMPDIR='" + (dir / "tmp").string() + "' " + compare_exe() +
+                               " --simulated " + compare_data("synthetic-history.csv").string() +
+                               " --mesh " + (dir / "frame.vtu").string() + " -o " +
+                               (dir / "report").string() + " --no-pdf");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_TRUE(fs::exists(dir / "report" / "wall-stress.png"));
+  EXPECT_EQ(std::distance(fs::recursive_directory_iterator(dir / "tmp"), {}), before);
+  EXPECT_EQ(read_text(dir / "notes.txt"), "a user's notes");
+}
+
 // With --calibrate, --mesh is the geometry the calibration simulates (no stress on it): the
 // picture then comes from the simulation's own series frame at capacity.
 TEST(WallStressPicture, AMeshWithoutStressLeavesThePictureToTheSeriesFrame) {

@@ -3,6 +3,10 @@
 // not one vesica::Error line. Built with AddressSanitizer and UndefinedBehaviorSanitizer
 // (tests/fuzz/CMakeLists.txt); run by ctest under the label "fuzz".
 //
+// Odd cases are mutated in their structure (StructureMutator.h: headers, counts, sizes),
+// even ones byte by byte (Mutator.h). `--seed` takes a list ("20,21,22"): the cases of each
+// seed in turn.
+//
 // Each case runs in a child process forked from this one, which never touches VTK, ITK or
 // gmsh itself (their thread pools do not survive a fork): a crash or a hang ends only that
 // case, and the case's input is kept in WORK/failures/ to reproduce it.
@@ -25,6 +29,7 @@
 
 #include "Mutator.h"
 #include "Readers.h"
+#include "StructureMutator.h"
 #include "vesica/core/Error.h"
 
 namespace fs = std::filesystem;
@@ -53,8 +58,8 @@ enum Outcome : int {
 
 struct Options {
   std::string reader;
-  int cases = 300;
-  std::uint64_t seed = 20;
+  int cases = 300;  // per seed
+  std::vector<std::uint64_t> seeds = {20};
   fs::path work = "fuzz-work";
   unsigned timeout_s = 10;
 };
@@ -72,8 +77,8 @@ void spill(const fs::path& p, const std::string& bytes) {
 
 [[noreturn]] void usage() {
   std::fputs(
-      "usage: vesica_fuzz READER [--cases N] [--seed S] [--work DIR] [--timeout-s T]\n"
-      "readers: dicom nifti stl ply obj vtp msh csv yaml\n",
+      "usage: vesica_fuzz READER [--cases N] [--seed S[,S...]] [--work DIR] [--timeout-s T]\n"
+      "readers: dicom nifti stl ply obj vtp msh csv yaml nrrd mha segnrrd state checkpoint\n",
       stderr);
   std::exit(2);
 }
@@ -86,9 +91,11 @@ Options parse(int argc, char** argv) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--cases")
       o.cases = std::stoi(value);
-    else if (key == "--seed")
-      o.seed = std::stoull(value);
-    else if (key == "--work")
+    else if (key == "--seed") {
+      o.seeds.clear();
+      std::istringstream list(value);
+      for (std::string seed; std::getline(list, seed, ',');) o.seeds.push_back(std::stoull(seed));
+    } else if (key == "--work")
       o.work = value;
     else if (key == "--timeout-s")
       o.timeout_s = static_cast<unsigned>(std::stoul(value));
@@ -182,23 +189,29 @@ std::vector<Seed> make_seeds(const Reader& reader, const fs::path& dir, unsigned
 }
 
 // Case i: a mutated copy of a seed file, or of one slice of a seed series.
-fs::path write_case(const Reader& reader, const Seed& seed, const Options& o, int i,
-                    std::string& mutated) {
+std::string mutated_case(const Reader& reader, const std::string& bytes, std::uint64_t seed,
+                         int i) {
+  const auto index = static_cast<std::uint64_t>(i);
+  return i % 2 ? mutate_structure(reader.name, bytes, seed, index) : mutate(bytes, seed, index);
+}
+
+fs::path write_case(const Reader& reader, const Seed& seed, const Options& o,
+                    std::uint64_t random_seed, int i, std::string& mutated) {
   if (reader.extension.empty()) {
     const fs::path folder = o.work / "case";
     fs::remove_all(folder);
     fs::create_directories(folder);
     const std::size_t victim =
-        std::mt19937_64(o.seed + static_cast<unsigned>(i))() % seed.files.size();
+        std::mt19937_64(random_seed + static_cast<unsigned>(i))() % seed.files.size();
     for (std::size_t k = 0; k < seed.files.size(); ++k) {
       const auto& [name, bytes] = seed.files[k];
-      if (k == victim) mutated = mutate(bytes, o.seed, static_cast<std::uint64_t>(i));
+      if (k == victim) mutated = mutated_case(reader, bytes, random_seed, i);
       spill(folder / name, k == victim ? mutated : bytes);
     }
     return folder;
   }
   const fs::path file = o.work / ("case" + reader.extension);
-  mutated = mutate(seed.files.front().second, o.seed, static_cast<std::uint64_t>(i));
+  mutated = mutated_case(reader, seed.files.front().second, random_seed, i);
   spill(file, mutated);
   return file;
 }
@@ -237,37 +250,44 @@ int main(int argc, char** argv) {
   const std::vector<Seed> seeds = make_seeds(reader, o.work / "seeds", o.timeout_s);
   int accepted = 0, refused = 0, failed = 0;
   double slowest_s = 0.0;
-  for (int i = 0; i < o.cases; ++i) {
-    const Seed& seed = seeds[static_cast<std::size_t>(i) % seeds.size()];
-    std::string mutated;
-    const fs::path input = write_case(reader, seed, o, i, mutated);
-    const auto start = std::chrono::steady_clock::now();
-    const int status =
-        in_child(o.work / "case.log", o.timeout_s, [&] { return read_case(reader, input); });
-    slowest_s = std::max(
-        slowest_s, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    const std::string log = slurp(o.work / "case.log");
-    const std::string why = judge(status, log, o.timeout_s);
-    if (why.empty()) {
-      (WEXITSTATUS(status) == kAccepted ? accepted : refused) += 1;
-      continue;
+  std::string seed_list;
+  for (const std::uint64_t random_seed : o.seeds) {
+    seed_list += (seed_list.empty() ? "" : ",") + std::to_string(random_seed);
+    for (int i = 0; i < o.cases; ++i) {
+      const Seed& seed = seeds[static_cast<std::size_t>(i) % seeds.size()];
+      std::string mutated;
+      const fs::path input = write_case(reader, seed, o, random_seed, i, mutated);
+      const auto start = std::chrono::steady_clock::now();
+      const int status =
+          in_child(o.work / "case.log", o.timeout_s, [&] { return read_case(reader, input); });
+      slowest_s =
+          std::max(slowest_s,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      const std::string log = slurp(o.work / "case.log");
+      const std::string why = judge(status, log, o.timeout_s);
+      if (why.empty()) {
+        (WEXITSTATUS(status) == kAccepted ? accepted : refused) += 1;
+        continue;
+      }
+      ++failed;
+      const fs::path kept =
+          o.work / "failures" /
+          ("case-" + std::to_string(random_seed) + "-" + std::to_string(i) + "-" +
+           seed.path.filename().string() + (reader.extension.empty() ? "" : reader.extension));
+      if (reader.extension.empty())
+        fs::copy(input, kept, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+      else
+        spill(kept, mutated);
+      std::printf("FAIL %s seed %llu case %d (from %s): %s; input kept as %s\n%s",
+                  reader.name.c_str(), static_cast<unsigned long long>(random_seed), i,
+                  seed.path.filename().c_str(), why.c_str(), kept.c_str(),
+                  first_lines(log, 12).c_str());
     }
-    ++failed;
-    const fs::path kept = o.work / "failures" /
-                          ("case-" + std::to_string(i) + "-" + seed.path.filename().string() +
-                           (reader.extension.empty() ? "" : reader.extension));
-    if (reader.extension.empty())
-      fs::copy(input, kept, fs::copy_options::recursive | fs::copy_options::overwrite_existing);
-    else
-      spill(kept, mutated);
-    std::printf("FAIL %s case %d (from %s): %s; input kept as %s\n%s", reader.name.c_str(), i,
-                seed.path.filename().c_str(), why.c_str(), kept.c_str(),
-                first_lines(log, 12).c_str());
   }
   std::printf(
-      "vesica_fuzz %s: %d cases (seed %llu): %d accepted, %d refused, %d failed; "
+      "vesica_fuzz %s: %d cases (seeds %s): %d accepted, %d refused, %d failed; "
       "slowest case %.2f s\n",
-      reader.name.c_str(), o.cases, static_cast<unsigned long long>(o.seed), accepted, refused,
-      failed, slowest_s);
+      reader.name.c_str(), o.cases * static_cast<int>(o.seeds.size()), seed_list.c_str(), accepted,
+      refused, failed, slowest_s);
   return failed == 0 ? 0 : 1;
 }

@@ -1,6 +1,9 @@
 #include "Readers.h"
 
+#include "CheckpointReader.h"
+
 #include <itkImage.h>
+#include <itkImageFileWriter.h>
 #include <itkImageRegionIterator.h>
 
 #include <fstream>
@@ -16,6 +19,8 @@
 #include "vesica/io/TaggedSurface.h"
 #include "vesica/io/VtuFile.h"
 #include "vesica/pipelines/Plan.h"
+#include "vesica/pipelines/StageManifest.h"
+#include "vesica/pipelines/Staleness.h"
 #include "vesica/segment/DicomSeriesWriter.h"
 #include "vesica/segment/VolumeReader.h"
 
@@ -124,24 +129,104 @@ void read_volume(const fs::path& input) {
   segment::read_volume(input, "");
 }
 
-std::vector<fs::path> nifti_seeds(const fs::path& dir) {
+io::LabelMap small_label_map() {
   io::LabelMap map;
   map.size = {8, 7, 6};
   map.spacing_mm = {0.8, 0.8, 2.5};
   map.origin_mm = {-3, 12, 40};
   map.voxels.assign(8 * 7 * 6, 0);
   for (std::size_t v = 0; v < map.voxels.size(); v += 3) map.voxels[v] = 1;
-  io::write_label_map(map, dir / "label.nii");
+  return map;
+}
+
+std::vector<fs::path> nifti_seeds(const fs::path& dir) {
+  io::write_label_map(small_label_map(), dir / "label.nii");
   return {dir / "label.nii"};
 }
 
-// The segment stage's reader (any NIfTI volume) and the surface stage's (a label map).
-void read_nifti(const fs::path& input) {
+// The segment stage's reader (any volume) and the surface stage's (a label map).
+void read_volume_and_label(const fs::path& input) {
   try {
     segment::read_volume(input, "");
   } catch (const Error&) {
   }
   io::read_label_map(input);
+}
+
+// A volume file of the small CT (.nrrd, .mha), with and without compression.
+std::vector<fs::path> volume_seeds(const fs::path& dir, const std::string& ext) {
+  std::vector<fs::path> seeds;
+  for (const bool compress : {false, true}) {
+    seeds.push_back(dir / ((compress ? "ct-gz" : "ct") + ext));
+    auto writer = itk::ImageFileWriter<itk::Image<float, 3>>::New();
+    writer->SetInput(small_volume());
+    writer->SetFileName(seeds.back().string());
+    writer->SetUseCompression(compress);
+    writer->Update();
+  }
+  if (ext == ".nrrd") {  // a detached header beside its raw data, as other tools write it
+    std::ofstream(dir / "ct.nhdr") << "NRRD0004\ntype: float\ndimension: 3\n"
+                                      "space: left-posterior-superior\nsizes: 12 10 4\n"
+                                      "space directions: (1.5,0,0) (0,1.5,0) (0,0,3)\n"
+                                      "endian: little\nencoding: raw\n"
+                                      "space origin: (-9,20,-40)\ndata file: ct.raw\n\n";
+    std::ofstream(dir / "ct.raw", std::ios::binary) << std::string(12 * 10 * 4 * 4, '\0');
+    seeds.push_back(dir / "ct.nhdr");
+  }
+  return seeds;
+}
+
+std::vector<fs::path> nrrd_seeds(const fs::path& dir) {
+  return volume_seeds(dir, ".nrrd");
+}
+std::vector<fs::path> mha_seeds(const fs::path& dir) {
+  return volume_seeds(dir, ".mha");
+}
+
+std::vector<fs::path> segnrrd_seeds(const fs::path& dir) {
+  io::write_label_map(small_label_map(), dir / "label.seg.nrrd");
+  return {dir / "label.seg.nrrd"};
+}
+
+void read_label(const fs::path& input) {
+  io::read_label_map(input);
+}
+
+// The runner's state files: a manifest and a failure record of a one-stage pipeline, read
+// as `vesica status` reads them.
+std::vector<fs::path> state_seeds(const fs::path& dir) {
+  const nlohmann::json manifest = {
+      {"tool", "vesica-phantom"},
+      {"version", "0.1.0"},
+      {"invocation", {"-o", "ct", "--report", ".vesica/phantom.json"}},
+      {"inputs", nlohmann::json::array()},
+      {"outputs", {{{"path", "ct"}, {"hash", "sha256:00"}, {"size", 12}, {"mtime_ns", 5}}}},
+      {"accepted_edits", {{{"path", "ct"}}}}};
+  const nlohmann::json failure = {
+      {"state", "failed"},
+      {"pid", 1},
+      {"exit_code", 1},
+      {"error", "ct: error"},
+      {"utc", "2026-11-24T23:01:09Z"},
+      {"outputs_before", {{{"path", "ct/a.dcm"}, {"hash", "sha256:01"}, {"size", 3}}}}};
+  std::ofstream(dir / "manifest.json") << manifest.dump(2);
+  std::ofstream(dir / "failed.json") << failure.dump(2);
+  return {dir / "manifest.json", dir / "failed.json"};
+}
+
+void read_state(const fs::path& input) {
+  const fs::path work = input.parent_path() / "state-work";
+  fs::remove_all(work);
+  fs::create_directories(work / ".vesica");
+  fs::copy_file(input, work / ".vesica" / "phantom.manifest.json");
+  fs::copy_file(input, work / ".vesica" / "phantom.failed.json");
+  std::ofstream(work / "p.yaml") << "stages:\n  phantom: {output: ct}\n";
+  pipelines::Diagnostics diagnostics;
+  const auto spec = pipelines::load_pipeline_file(work / "p.yaml", diagnostics);
+  const auto plan = pipelines::build_plan(spec, {work, pipelines::own_bin_dir()}, diagnostics);
+  for (const auto& status : pipelines::assess(plan))
+    if (status.line().find('\n') != std::string::npos)
+      throw std::runtime_error("a status of several lines: " + status.line());
 }
 
 std::vector<fs::path> csv_seeds(const fs::path& dir) {
@@ -181,11 +266,20 @@ void read_yaml(const fs::path& input) {
 
 const std::vector<Reader>& readers() {
   static const std::vector<Reader> all = {
-      {"dicom", "", dicom_seeds, read_volume},  {"nifti", ".nii", nifti_seeds, read_nifti},
-      {"stl", ".stl", stl_seeds, read_surface}, {"ply", ".ply", ply_seeds, read_surface},
-      {"obj", ".obj", obj_seeds, read_surface}, {"vtp", ".vtp", vtp_seeds, read_surface},
-      {"msh", ".msh", msh_seeds, read_msh},     {"csv", ".csv", csv_seeds, read_csv},
-      {"yaml", ".yaml", yaml_seeds, read_yaml}};
+      {"dicom", "", dicom_seeds, read_volume},
+      {"nifti", ".nii", nifti_seeds, read_volume_and_label},
+      {"stl", ".stl", stl_seeds, read_surface},
+      {"ply", ".ply", ply_seeds, read_surface},
+      {"obj", ".obj", obj_seeds, read_surface},
+      {"vtp", ".vtp", vtp_seeds, read_surface},
+      {"msh", ".msh", msh_seeds, read_msh},
+      {"csv", ".csv", csv_seeds, read_csv},
+      {"yaml", ".yaml", yaml_seeds, read_yaml},
+      {"nrrd", ".nrrd", nrrd_seeds, read_volume_and_label},
+      {"mha", ".mha", mha_seeds, read_volume_and_label},
+      {"segnrrd", ".seg.nrrd", segnrrd_seeds, read_label},
+      {"state", ".json", state_seeds, read_state},
+      {"checkpoint", ".bin", checkpoint_seeds, read_checkpoint_fields}};
   return all;
 }
 

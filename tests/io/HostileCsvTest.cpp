@@ -79,13 +79,27 @@ TEST(HostileCsv, ALongCellWithinTheLineLimitIsQuotedShort) {
   EXPECT_NE(error.find("row 2, column \"pdet_cmh2o\": \"xxxx"), std::string::npos) << error;
 }
 
-TEST(HostileCsv, MoreRowsThanTheLimitAreRefusedWhileStreaming) {
+TEST(HostileCsv, MoreRowsThanTheLimitAreRefusedBeforeAnyIsParsed) {
   std::string text = "time_s,pdet_cmh2o,infused_ml\n";
   for (int i = 0; i < 1001; ++i) text += std::to_string(i) + ",1,1\n";
   vc::CsvOptions options;
   options.max_rows = 1000;
   const std::string error = error_of(write_file("csv-rows", text), options);
   EXPECT_NE(error.find("more than 1000 data rows"), std::string::npos) << error;
+}
+
+// The rows are counted before parsing: comments, blank lines and lines of separators alone
+// are not rows, so a table at the limit with them is read.
+TEST(HostileCsv, CommentsAndBlankLinesDoNotCountAsRows) {
+  std::string text = "# recorded in cmH2O\n\n  # a note after blanks\ntime_s,pdet_cmh2o,infused_ml\n";
+  for (int i = 0; i < 1000; ++i) {
+    text += std::to_string(i) + ",1,1\n";
+    if (i % 100 == 0) text += "# marker\n\n , ,\n";
+  }
+  vc::CsvOptions options;
+  options.max_rows = 1000;
+  const vc::CsvTable table = vc::read_csv_table(write_file("csv-rows-at-limit", text), options);
+  EXPECT_EQ(table.row_count(), 1000u);
 }
 
 TEST(HostileCsv, ABinaryFileIsRefusedInOneLine) {

@@ -1,7 +1,8 @@
 // An interrupted simulation continues where it stopped (issue 22 item 4): `vesica run`
 // terminated with SIGTERM while vesica-simulate is filling leaves the stage "interrupted
 // (checkpoint at t = … s)"; the next `vesica run` says it resumes from that checkpoint and
-// ends with the history of a run that was never interrupted.
+// ends with the history of a run that was never interrupted; and the stage is then fresh,
+// as one run whole (issue 37: `--resume` is no parameter).
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -33,7 +34,7 @@ fs::path sphere_pipeline(const fs::path& dir) {
 
 }  // namespace
 
-TEST(RunnerResume, ASimulationInterruptedMidFillingResumesToTheUninterruptedHistory) {
+TEST(RunnerResume, ASimulationInterruptedMidFillingResumesToTheUninterruptedHistoryAndStaysFresh) {
   const fs::path whole_dir = scratch_dir("runner-resume-whole");
   const CommandResult whole =
       run_vesica("run " + quoted(sphere_pipeline(whole_dir).string()), whole_dir);
@@ -60,4 +61,7 @@ TEST(RunnerResume, ASimulationInterruptedMidFillingResumesToTheUninterruptedHist
       << resumed.err;
   EXPECT_EQ(slurp(dir / "out/sim/history.csv"), expected);
   EXPECT_FALSE(fs::exists(checkpoint));
+  EXPECT_EQ(status_of(file, dir).at("simulate").first, "fresh")
+      << status_of(file, dir).at("simulate").second;
+  EXPECT_TRUE(run_json(file, dir).empty());  // the next run has nothing to do
 }

@@ -1,8 +1,11 @@
 """The Python module `vesica` against vesica-simulate on the same wall: the same
 cystometry gives the same Pdet at capacity to 1e-9 relative, the history comes back as
-numpy columns and the readers return what the files hold. Run by ctest (test_python) with
-Debian's python3 and pytest; VESICA_BIN_DIR names the executables and PYTHONPATH the
-module."""
+numpy columns and the readers return what the files hold. Its arguments are taken by
+value: no dict is changed, no default is shared, a bad key fails its own call only; every
+catalogue key resolves on the model card to the value given (issue 38). Run by ctest
+(test_python) with Debian's python3 and pytest; VESICA_BIN_DIR names the executables and
+PYTHONPATH the module."""
+import copy
 import json
 import os
 import subprocess
@@ -13,7 +16,7 @@ import pytest
 import vesica
 
 BIN = os.environ.get("VESICA_BIN_DIR", "build/bin")
-MATERIAL = {"name": "neo-hookean", "mu": 5e3, "K_per_mu": 1000.0}  # --material neo-hookean --mu-kpa 5
+MATERIAL = {"material": "neo-hookean", "mu_kpa": 5}  # --material neo-hookean --mu-kpa 5
 PROTOCOL = {"start_ml": 50, "capacity_ml": 120, "fill_rate_ml_min": 50, "no_void": True}
 
 
@@ -74,10 +77,108 @@ def test_wall_and_readers_return_the_files_content(sphere):
 
 def test_bad_parameters_raise_with_the_option_named(sphere):
     wall = vesica.load_wall(str(sphere))
-    with pytest.raises(vesica.Error, match="capacity"):
+    with pytest.raises(ValueError, match="capacity"):
         vesica.run_cystometry(wall, MATERIAL, {"capacity_mll": 100})
-    with pytest.raises(vesica.Error, match="mu"):
-        vesica.run_cystometry(wall, {"name": "neo-hookean", "mu": -1.0}, PROTOCOL)
+    with pytest.raises(ValueError, match="mu_kpa"):
+        vesica.run_cystometry(wall, {"material": "neo-hookean", "mu_kpa": -1.0}, PROTOCOL)
+    with pytest.raises(ValueError, match="k1"):
+        vesica.run_cystometry(wall, {"material": "neo-hookean", "k1_kpa": 1.0}, PROTOCOL)
+
+
+def test_no_argument_is_changed(sphere):
+    options = {"residual_ml": 40, "posture": "sitting"}
+    material = {"material": "bladder", "contractility_kpa": 80}
+    protocol = {"capacity_ml": 100, "fill_rate_ml_min": 60, "level": 0}
+    before = [copy.deepcopy(d) for d in (options, material, protocol)]
+    wall = vesica.load_wall(str(sphere), options)
+    vesica.run_cystometry(wall, material, protocol)
+    vesica.model_card(wall, material, protocol)
+    assert [options, material, protocol] == before
+    # A dict changed after the call does not reach the wall either.
+    options["residual_ml"] = 90
+    card = vesica.model_card(wall)
+    assert card["reference"]["residual_ml"] == 40
+    assert card["protocol"]["posture"] == "sitting"
+
+
+def test_a_second_run_without_a_protocol_is_the_first_on_a_fresh_wall(sphere):
+    # Earlier, the protocol's keys were written into the wall's (and the shared default
+    # dict's) options, so that a later call inherited another call's capacity.
+    wall = vesica.load_wall(str(sphere))
+    vesica.run_cystometry(wall, MATERIAL, {"capacity_ml": 90, "no_void": True, "level": 0})
+    other = vesica.load_wall(str(sphere))
+    vesica.run_cystometry(other, MATERIAL, {"capacity_ml": 70, "no_void": True, "level": 0})
+    again = vesica.run_cystometry(wall, MATERIAL, {"level": 0})
+    fresh = vesica.run_cystometry(vesica.load_wall(str(sphere)), MATERIAL, {"level": 0})
+    assert again["model_card"] == fresh["model_card"]
+    assert again["model_card"]["protocol"]["capacity_ml"] == 350  # vesica-simulate's default
+    np.testing.assert_array_equal(again["history"]["pdet_cmh2o"], fresh["history"]["pdet_cmh2o"])
+
+
+def test_a_typo_fails_only_its_own_call(sphere):
+    wall = vesica.load_wall(str(sphere))
+    first = vesica.run_cystometry(wall, MATERIAL, PROTOCOL)
+    with pytest.raises(ValueError, match="'capacity'"):
+        vesica.run_cystometry(wall, MATERIAL, {"capacity": 350})
+    with pytest.raises(ValueError):
+        vesica.load_wall(str(sphere), {"residual": 40})
+    after = vesica.run_cystometry(wall, MATERIAL, PROTOCOL)
+    np.testing.assert_array_equal(first["history"]["pdet_cmh2o"], after["history"]["pdet_cmh2o"])
+
+
+# Where the model card holds each catalogue parameter (ModelCardJson.h's layout).
+CARD_PATH = {
+    "mu": ("material", "mu_pa"), "k": ("material", "k_pa"), "k1": ("material", "fibers", "k1_pa"),
+    "k2": ("material", "fibers", "k2"), "beta_vol": ("material", "beta_vol"),
+    "tone": ("material", "muscle", "tone_pa"),
+    "contractility": ("material", "muscle", "contractility_pa"),
+    "optimal_stretch": ("material", "muscle", "optimal_stretch"),
+    "stretch_width": ("material", "muscle", "stretch_width"),
+    "hill_a": ("material", "muscle", "hill_a"), "hill_vmax": ("material", "muscle", "hill_vmax_per_s"),
+    "p_open": ("urethra", "p_open_cmh2o"), "p_close": ("urethra", "p_close_cmh2o"),
+    "r1": ("urethra", "r1_cmh2o_s_per_ml"), "r2": ("urethra", "r2_cmh2o_s2_per_ml2"),
+    "urethra_half_open": ("urethra", "half_open_cmh2o"),
+    "urethra_recovery_half": ("urethra", "recovery_half"),
+    "straining": ("voiding", "straining_kpa"), "activation_delay": ("voiding", "activation", "delay_s"),
+    "activation_onset": ("voiding", "activation", "onset_s"),
+    "activation_plateau": ("voiding", "activation", "plateau_s"),
+    "activation_fade": ("voiding", "activation", "fade_s"),
+}
+
+
+def card_value(card, entry):
+    """The card's value of a catalogue parameter, in SI: the material's are SI on the card,
+    the protocol's in the key's own unit."""
+    if entry["per_branch"]:
+        field = "beta" if entry["name"] == "beta" else "tau_s"
+        return [b[field] for b in card["material"]["maxwell_branches"]]
+    value = card
+    for step in CARD_PATH[entry["name"]]:
+        value = value[step]
+    return value if CARD_PATH[entry["name"]][0] == "material" else value * entry["si_per_unit"]
+
+
+def test_every_catalogue_key_resolves_on_the_card_for_each_material(sphere):
+    wall = vesica.load_wall(str(sphere))
+    catalogue = vesica.parameter_catalogue()
+    assert {e["name"] for e in catalogue if not e["per_branch"]} == set(CARD_PATH)
+    for material in ("bladder", "neobladder", "neo-hookean", "maxwell", "fibers"):
+        default = vesica.model_card(wall, {"material": material})
+        for e in catalogue:
+            if material not in e["defaults_si"]:
+                with pytest.raises(ValueError):
+                    vesica.model_card(wall, {"material": material, e["key"]: 0.5})
+                continue
+            if e["per_branch"]:
+                assert card_value(default, e) == pytest.approx(list(e["defaults_si"][material]))
+                continue
+            d = e["defaults_si"][material][0]
+            assert card_value(default, e) == pytest.approx(d, rel=1e-12), (material, e["key"])
+            # In range for every entry (p_open above the default p_close), and not the default.
+            v = 30.0 if e["name"] == "p_open" else 0.5 if d != 0.5 * e["si_per_unit"] else 0.25
+            given = vesica.model_card(wall, {"material": material, e["key"]: v})
+            assert card_value(given, e) == pytest.approx(v * e["si_per_unit"], rel=1e-12), \
+                (material, e["key"])
 
 
 def test_python_calibration_equals_the_command_line(sphere, tmp_path):
@@ -100,5 +201,5 @@ def test_python_calibration_equals_the_command_line(sphere, tmp_path):
     assert mu["ci95_low"] <= mu["value"] <= mu["ci95_high"]
     filling = fit["series"][0]
     assert {"rmse", "constant_baseline_rmse", "line_baseline_rmse"} <= set(filling)
-    with pytest.raises(vesica.Error, match="max_simulation"):
+    with pytest.raises(ValueError, match="max_simulation"):
         vesica.calibrate(wall, recording, "mu", {"max_simulation": 8})

@@ -183,8 +183,8 @@ TEST(Physiology, WeakerDetrusorEmptiesLessAndFlowsSlower) {
   VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
   // The default contractility is 100 kPa (docs/simulate.md).
   std::vector<SimulateRun> runs = {default_run(),
-                                   simulate(ct_wall(), "detrusor-75", "--detrusor-kpa 75"),
-                                   simulate(ct_wall(), "detrusor-50", "--detrusor-kpa 50")};
+                                   simulate(ct_wall(), "detrusor-75", "--contractility-kpa 75"),
+                                   simulate(ct_wall(), "detrusor-50", "--contractility-kpa 50")};
   for (std::size_t i = 1; i < runs.size(); ++i) {
     ASSERT_EQ(runs[i].exit_code, 0) << runs[i].output;
     print(i == 1 ? "75 % contractility" : "50 % contractility", runs[i]);

@@ -10,6 +10,8 @@
 //  - the note and the summary's "voiding_tail" say where the wall handed over.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <memory>
 #include <string>
@@ -48,8 +50,8 @@ class FailingWall final : public CavityModel {
     }
     return wall_.try_step(step);
   }
-  bool hand_over_voiding(const std::string& failure) override {
-    handed_over_ = wall_.hand_over_voiding(failure);
+  bool hand_over_voiding(const std::string& failure, double time_s) override {
+    handed_over_ = wall_.hand_over_voiding(failure, time_s);
     return handed_over_;
   }
   double volume() const override { return wall_.volume(); }
@@ -62,6 +64,7 @@ class FailingWall final : public CavityModel {
   nlohmann::json statistics() const override { return wall_.statistics(); }
   void add_summary(nlohmann::json& s) const override { wall_.add_summary(s); }
   std::vector<std::string> take_notes() override { return wall_.take_notes(); }
+  std::vector<LevelHandOver> hand_overs() const override { return wall_.hand_overs(); }
 
  private:
   HydrostaticCavity& wall_;
@@ -108,6 +111,18 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
   ASSERT_TRUE(tail.summary.contains("notes"));
   EXPECT_NE(tail.summary["notes"].dump().find("sphere-equivalent (level 0)"), std::string::npos)
       << tail.summary["notes"];
+
+  // The model card's hand-over is the same one: level 1 to 0 where the wall stopped, at the
+  // time of its last row.
+  const std::vector<LevelHandOver> hand_overs = failing.hand_overs();
+  ASSERT_EQ(hand_overs.size(), 1u);
+  EXPECT_EQ(hand_overs[0].from, 1);
+  EXPECT_EQ(hand_overs[0].to, 0);
+  EXPECT_EQ(hand_overs[0].volume_ml, t["from_ml"].get<double>());
+  EXPECT_TRUE(std::any_of(tail.history.begin(), tail.history.end(), [&](const HistoryRow& r) {
+    return r.time_s == hand_overs[0].time_s && r.volume_ml == hand_overs[0].volume_ml;
+  }));
+  EXPECT_NE(hand_overs[0].reason.find("could not take a voiding step"), std::string::npos);
 
   // Pdet across the hand-over: the last wall row and the first tail row, one step apart.
   const double from = t["from_ml"].get<double>();

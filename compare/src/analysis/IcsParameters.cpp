@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Units.h"
 
 namespace vesica::compare {
@@ -117,9 +119,17 @@ void fill_voiding(const Recording& r, const std::vector<bool>& flagged, IcsParam
   if (!r.has_flow() && r.voided_ml.empty()) return;
   const auto voided = r.voided_or_integrated_ml();
   p.voided_ml = voided.back();
-  p.pvr_ml = std::max(0.0, r.bladder_volume_ml(r.rows() - 1));
-  if (*p.voided_ml + *p.pvr_ml > 0)
-    p.voiding_efficiency = *p.voided_ml / (*p.voided_ml + *p.pvr_ml);
+  // Without a voided volume (flow, but no time to integrate it) the bladder volume never
+  // falls: PVR and efficiency are unknown, not the whole capacity and 0.
+  if (!r.voided_ml.empty() || !r.volume_ml.empty()) {
+    p.pvr_ml = std::max(0.0, r.bladder_volume_ml(r.rows() - 1));
+    if (*p.voided_ml + *p.pvr_ml > 0)
+      p.voiding_efficiency = *p.voided_ml / (*p.voided_ml + *p.pvr_ml);
+  } else {
+    p.notes.push_back(
+        "no voided volume (flow without time): PVR and voiding efficiency are "
+        "left out");
+  }
   if (!r.has_time())
     p.notes.push_back(
         "no time column: flow time, voiding time, Qave and time to Qmax "

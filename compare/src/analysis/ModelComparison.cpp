@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/analysis/PiecewiseLinear.h"
 
 namespace vesica::compare {

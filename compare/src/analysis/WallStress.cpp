@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Error.h"
 #include "vesica/core/Regions.h"
 #include "vesica/io/PvdSeries.h"

@@ -1,5 +1,7 @@
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/analysis/WallStress.h"
 #include "vesica/io/HistoryCsv.h"
 

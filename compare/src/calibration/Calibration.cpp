@@ -6,16 +6,22 @@
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/ParameterCatalogue.h"
 
 namespace vesica::compare {
 namespace {
 
 using Apply = std::function<void(double, simulate::MaterialSpec&, simulate::ProtocolSettings&)>;
 
-// A material parameter, stored in SI: value · factor.
-Apply material(const char* key, double factor) {
-  return [key, factor](double v, simulate::MaterialSpec& m, simulate::ProtocolSettings&) {
-    m.params[key] = v * factor;
+// A material parameter, in the catalogue's unit, stored in SI under its material key; a
+// Maxwell branch's strength or time is the first branch's (the others keep theirs).
+Apply material(const simulate::PhysicalParameter& p) {
+  const std::string key = p.per_branch ? p.material_key + "1" : p.material_key;
+  const double si_per_unit = p.si_per_unit;
+  return [key, si_per_unit, bare = p.material_key](double v, simulate::MaterialSpec& m,
+                                                   simulate::ProtocolSettings&) {
+    m.params.erase(bare);  // "beta"/"tau" spell the first branch too
+    m.params[key] = v * si_per_unit;
   };
 }
 
@@ -51,39 +57,30 @@ void bulk_modulus(double kpa, simulate::MaterialSpec& m, simulate::ProtocolSetti
   m.params["K"] = units::pa_from_kpa(kpa);
 }
 
-using simulate::ProtocolSettings;
+// How a catalogue parameter's value enters the model: most by their key or field alone;
+// the straining (which sets the drive), the urethra's pair (which keeps p_close <= p_open)
+// and the bulk modulus (which stops following mu) do more.
+Apply applier(const simulate::PhysicalParameter& p) {
+  if (p.name == "straining") return straining;
+  if (p.name == "p_open") return opening_pressure;
+  if (p.name == "p_close") return closing_pressure;
+  if (p.name == "k") return bulk_modulus;
+  return p.is_material() ? material(p) : protocol(p.field);
+}
 
-// One line a parameter: name, unit, start, lower, upper, voiding only, how it applies.
+// Every parameter of the catalogue a calibration fits (ParameterCatalogue.h): its name,
+// unit, search range and phase; its start is the model's (CalibrationRun.cpp).
 const std::vector<ModelParameter>& all_parameters() {
-  static const std::vector<ModelParameter> all = {
-      {{"mu", "kPa", 5.0, 0.1, 100.0, false}, material("mu", 1e3)},
-      {{"k", "kPa", 10.0, 0.1, 1e4, false}, bulk_modulus},
-      {{"beta", "-", 0.15, 1e-3, 50.0, false}, material("beta", 1.0)},
-      {{"tau", "s", 1e-4, 1e-6, 1e3, false}, material("tau", 1.0)},
-      {{"k1", "Pa", 10.0, 1e-2, 1e5, false}, material("k1", 1.0)},
-      {{"k2", "-", 1.0, 1e-2, 100.0, false}, material("k2", 1.0)},
-      {{"p_open", "cmH2O", 20.0, 0.5, 150.0, true}, opening_pressure},
-      {{"r1", "cmH2O s/ml", 0.2, 1e-4, 20.0, true}, protocol(&ProtocolSettings::r1_cmh2o_s_per_ml)},
-      {{"r2", "cmH2O s2/ml2", 0.02, 1e-5, 5.0, true},
-       protocol(&ProtocolSettings::r2_cmh2o_s2_per_ml2)},
-      // The detrusor's contractility, the wall material's (docs/physics.md §2.6, §12), up to
-      // well beyond the strongest reported isovolumetric pressures (docs/compare.md).
-      {{"detrusor", "kPa", 100.0, 0.1, 300.0, true}, material("contractility", 1e3)},
-      {{"straining", "kPa", 4.0, 0.1, 20.0, true}, straining},
-      // The latency of the drive from the end of filling: the onset of flow (§7.2).
-      {{"activation_delay", "s", 5.0, 0.1, 60.0, true},
-       protocol(&ProtocolSettings::activation_delay_s)},
-      {{"activation_onset", "s", 2.0, 0.05, 60.0, true},
-       protocol(&ProtocolSettings::activation_onset_s)},
-      // The fade of the drive sets the flow's tail-off and so the flow time (§7.2).
-      {{"activation_fade", "s", 5.0, 0.1, 60.0, true},
-       protocol(&ProtocolSettings::activation_fade_s)},
-      {{"p_close", "cmH2O", 10.0, 0.5, 150.0, true}, closing_pressure},
-      // The sphincter's recovery once the urethra is open: the flow's tail and the
-      // after-contraction of a detrusor voiding against a closing urethra (physics.md §5).
-      {{"urethra_recovery", "-", 0.5, 0.02, 1.0, true},
-       protocol(&ProtocolSettings::urethra_recovery_half)},
-  };
+  static const std::vector<ModelParameter> all = [] {
+    std::vector<ModelParameter> list;
+    for (const simulate::PhysicalParameter& p : simulate::parameter_catalogue()) {
+      if (!p.fitted()) continue;
+      const FitParameter fit{
+          p.name, p.unit, p.fit_range->lower, p.fit_range->lower, p.fit_range->upper, p.voiding};
+      list.push_back({fit, applier(p)});
+    }
+    return list;
+  }();
   return all;
 }
 
@@ -94,6 +91,7 @@ ModelRun run_once(const CystometryModel& m) {
   run.completed = result.completed;
   run.failure = result.failure;
   run.notes = result.notes;
+  run.card = result.card;
   return run;
 }
 
@@ -107,8 +105,14 @@ std::vector<std::string> model_parameter_names() {
 
 ModelParameter model_parameter(const std::string& name) {
   std::string choices;
+  const simulate::PhysicalParameter* entry = simulate::find_parameter(name);
   for (const auto& p : all_parameters()) {
-    if (p.fit.name == name) return p;
+    if (entry && (name == entry->name || name == entry->old_name) && p.fit.name == entry->name) {
+      if (name != entry->name)
+        log()->warn("--calibrate: {} is the earlier name of {}: give {}", name, entry->name,
+                    entry->name);
+      return p;
+    }
     choices += (choices.empty() ? "" : ", ") + p.fit.name;
   }
   usage_error("--calibrate: unknown parameter \"" + name + "\"", "choose from " + choices);

@@ -2,6 +2,10 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include "vesica/simulate/ModelCardJson.h"
+
 namespace vesica::compare {
 namespace {
 
@@ -60,20 +64,23 @@ nlohmann::json array_of(const std::vector<T>& items) {
 }  // namespace
 
 nlohmann::json to_json(const CalibrationResult& r) {
-  return {{"parameters", array_of(r.parameters)},
-          {"volume_range_ml", {r.volume_lo_ml, r.volume_hi_ml}},
-          {"rmse_cmh2o", r.rmse_cmh2o},
-          {"max_abs_error_cmh2o", r.max_abs_error_cmh2o},
-          {"series", array_of(r.series)},
-          {"stages", array_of(r.stages)},
-          {"simulations", r.simulations},
-          {"failed_simulations", r.failed_simulations},
-          {"iterations", r.iterations},
-          {"seconds", r.seconds},
-          {"fitted", r.fitted},
-          {"status", r.status},
-          {"notes", r.notes},
-          {"voiding", r.voiding ? to_json(*r.voiding) : nlohmann::json()}};
+  return {
+      {"parameters", array_of(r.parameters)},
+      {"volume_range_ml", {r.volume_lo_ml, r.volume_hi_ml}},
+      {"rmse_cmh2o", r.rmse_cmh2o},
+      {"max_abs_error_cmh2o", r.max_abs_error_cmh2o},
+      {"series", array_of(r.series)},
+      {"stages", array_of(r.stages)},
+      {"simulations", r.simulations},
+      {"failed_simulations", r.failed_simulations},
+      {"iterations", r.iterations},
+      {"seconds", r.seconds},
+      {"fitted", r.fitted},
+      {"status", r.status},
+      {"notes", r.notes},
+      {"voiding", r.voiding ? to_json(*r.voiding) : nlohmann::json()},
+      {"fitted_filling", {{"volume_ml", r.fitted_filling.x}, {"pdet_cmh2o", r.fitted_filling.y}}},
+      {"model_card", r.fitted_card ? nlohmann::json(*r.fitted_card) : nlohmann::json()}};
 }
 
 }  // namespace vesica::compare

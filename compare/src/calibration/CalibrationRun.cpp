@@ -1,7 +1,9 @@
-// --calibrate from the command line: the wall from --mesh, the protocol from the measured
-// recording (its fill rate, its abdominal pressure at capacity), the data from the
-// recording's filling (--fit-volume-ml, default from --start-ml to capacity) and, when a
-// voiding parameter is fitted, its voiding.
+// --calibrate from the command line: the model vesica-simulate would run with the same
+// options (the material, default the bladder wall, its own parameters and stress-free
+// volume) on the wall from --mesh, the protocol from the measured recording (its fill rate,
+// its abdominal pressure at capacity), the data from the recording's filling
+// (--fit-volume-ml, default from --start-ml to capacity) and, when a voiding parameter is
+// fitted, its voiding. Each fitted parameter starts from that model's value.
 #include <algorithm>
 #include <sstream>
 
@@ -11,6 +13,8 @@
 #include "vesica/compare/calibration/CalibrationRun.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/ParameterCatalogue.h"
+#include "vesica/simulate/SimulateParameters.h"
 #include "vesica/simulate/protocol/PressureTrace.h"
 
 namespace vesica::compare {
@@ -18,25 +22,30 @@ namespace {
 
 constexpr double kStandardFillRateMlMin = 50.0;  // ICS medium filling, docs/physics.md §7.1
 
-// The default bladder wall's passive parameters (docs/simulate.md "Default walls"): the
-// start of a fit of the detrusor-voided model, whose wall is that one.
-constexpr double kBladderMuKpa = 1.0, kBladderK1Pa = 60.0, kBladderK2 = 0.045;
+// The value a fitted parameter starts from: the model's own (given, or the material's
+// default), unless that lies on or outside the search's bounds, where the catalogue's
+// start (or the nearest bound) is taken.
+double start_value(const simulate::PhysicalParameter& p, const simulate::ModelCard& model) {
+  std::vector<double> si = simulate::card_value_si(model, p);
+  // A material without a Maxwell branch fits the thesis's branch (the maxwell material's).
+  if (si.empty() && p.per_branch) si = p.default_si("maxwell");
+  if (si.empty())
+    usage_error("--calibrate " + p.name + ": material " + model.material.name + " has no " + p.name,
+                "choose a --material that has it (docs/parameters.md)");
+  const double v = si.front() / p.si_per_unit;
+  const simulate::FitRange& r = *p.fit_range;
+  if (v > r.lower && v < r.upper) return v;
+  return p.fit_start ? *p.fit_start : std::clamp(v, r.lower, r.upper);
+}
 
-std::vector<ModelParameter> parse_parameters(const std::string& list, const CalibrationModel& m,
-                                             bool bladder) {
+std::vector<ModelParameter> parse_parameters(const std::string& list,
+                                             const simulate::ModelCard& model) {
   std::vector<ModelParameter> specs;
   std::stringstream ss(list);
   for (std::string name; std::getline(ss, name, ',');) {
     if (name.empty()) continue;
     ModelParameter s = model_parameter(name);
-    double& start = s.fit.initial;
-    if (name == "mu") start = bladder ? kBladderMuKpa : m.mu_kpa;
-    if (name == "k1" && bladder) start = kBladderK1Pa;
-    if (name == "k2" && bladder) start = kBladderK2;
-    if (name == "k" && m.k_kpa > 0) start = m.k_kpa;
-    if (name == "straining" && m.straining_kpa > 0) start = m.straining_kpa;
-    if (name == "detrusor" && m.detrusor_kpa > 0) start = m.detrusor_kpa;
-    start = std::clamp(start, s.fit.lower, s.fit.upper);
+    s.fit.initial = start_value(simulate::catalogue_parameter(s.fit.name), model);
     specs.push_back(s);
   }
   if (specs.empty()) usage_error("--calibrate: no parameter named");
@@ -47,18 +56,9 @@ bool fits(const std::vector<ModelParameter>& specs, const char* name) {
   return std::any_of(specs.begin(), specs.end(), [&](const auto& s) { return s.fit.name == name; });
 }
 
-// The drive that voids the model: straining when it is fitted or given, else the detrusor.
-bool strains(const std::vector<ModelParameter>& specs, const CalibrationModel& m) {
-  return fits(specs, "straining") || m.straining_kpa > 0;
-}
-
-std::string material_for(const std::vector<ModelParameter>& specs, const CalibrationModel& m,
-                         bool voiding) {
-  // A detrusor-voided model needs a muscle: the default bladder wall (docs/simulate.md).
-  if (voiding && !strains(specs, m)) return "bladder";
-  if (fits(specs, "k1") || fits(specs, "k2")) return "fibers";
-  if (fits(specs, "beta") || fits(specs, "tau")) return "maxwell";
-  return "neo-hookean";
+// The drive that voids the model: straining when it is fitted or asked for (--drive).
+bool strains(const std::vector<ModelParameter>& specs, const simulate::ProtocolSettings& p) {
+  return fits(specs, "straining") || p.drive == simulate::VoidingDrive::Straining;
 }
 
 // The fill rate the model fills at: given, else inferred from the recording, else ICS's
@@ -75,9 +75,10 @@ double fill_rate(const CompareOptions& o, const RecordingAnalysis& a,
 
 CalibrationTargets targets_for(const CompareOptions& o, const RecordingAnalysis& a,
                                const ComparisonOptions& comparison, bool voiding) {
-  double lo = o.simulation.start_ml, hi = o.simulation.start_ml;
+  double lo = o.simulation.model.protocol.start_ml, hi = o.simulation.model.protocol.start_ml;
   if (!a.filling.x.empty()) {
-    lo = std::max(*std::min_element(a.filling.x.begin(), a.filling.x.end()), o.simulation.start_ml);
+    lo = std::max(*std::min_element(a.filling.x.begin(), a.filling.x.end()),
+                  o.simulation.model.protocol.start_ml);
     hi = *std::max_element(a.filling.x.begin(), a.filling.x.end());
   }
   if (comparison.volume_range_ml) {
@@ -92,7 +93,7 @@ CalibrationTargets targets_for(const CompareOptions& o, const RecordingAnalysis&
   if (t.series.empty() || t.size() < 2)
     usage_error("--calibrate: the measured recording has fewer than two readings to fit",
                 "check --fit-volume-ml and --start-ml against the recording's volumes");
-  if (t.capacity_ml <= o.simulation.start_ml)
+  if (t.capacity_ml <= o.simulation.model.protocol.start_ml)
     usage_error(
         fmt::format("--calibrate: the data end at {:g} ml, not above --start-ml", t.capacity_ml),
         "lower --start-ml");
@@ -118,51 +119,39 @@ simulate::PressureTrace recorded_voiding_pabd(const RecordingAnalysis& a) {
   return trace;
 }
 
+// The model vesica-simulate would run with the same options (the material's own parameters
+// unless given, its stress-free volume), set to the recording: its fill rate, its abdominal
+// pressure at capacity, and, for a detrusor-voided model, its abdominal pressure while
+// voiding. Without gravity: the measured Pdet is referred to the catheter, not to a
+// hydrostatic column (said on the card).
 CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
-                          const std::vector<ModelParameter>& specs, bool voiding,
                           std::vector<std::string>& notes) {
+  const simulate::SimulateSettings& s = o.simulation.model;
   CystometryModel m;
-  m.material.name = material_for(specs, o.simulation, voiding);
-  simulate::WallOptions wall_options;
-  wall_options.thickness_mm = o.simulation.thickness_mm;
-  // The bladder wall is stress-free at its own residual volume (WallOptions' default, below
-  // the start of filling: docs/simulate.md "Default walls"), so that it starts filling at a
-  // positive Pdet and can void below the start volume while taut; the plain laws at the
-  // start volume, as the filling-only fits always were.
-  if (m.material.name != "bladder") wall_options.residual_ml = o.simulation.start_ml;
+  m.material = simulate::material_spec(s.material);
+  simulate::WallOptions wall_options = s.wall;
+  wall_options.posture = s.posture;
   m.wall = simulate::load_wall(o.mesh, wall_options);
-  // The bladder wall keeps its own passive parameters unless fitted.
-  if (m.material.name != "bladder")
-    m.material.params = {{"mu", units::pa_from_kpa(o.simulation.mu_kpa)}};
-  if (o.simulation.k_kpa > 0.0)
-    m.material.params["K"] = units::pa_from_kpa(o.simulation.k_kpa);
-  else
-    m.material.params["K_per_mu"] = 1e3;  // nearly incompressible, as vesica-simulate
-  m.protocol.start_ml = o.simulation.start_ml;
-  // Without gravity: a stress-free membrane at the start volume carries its own weight
-  // with no stiffness (no equilibrium), and the measured Pdet is referred to the
-  // catheter, not to a hydrostatic column.
+  m.protocol = s.protocol;
+  m.protocol.posture = s.posture;
   m.protocol.gravity = false;
   m.protocol.fill_rate_ml_min = fill_rate(o, a, notes);
   // The urethra opens on Pves = Pdet + Pabd: the model's abdomen at the recording's.
   const auto& r = a.recording;
   if (!r.pabd_cmh2o.empty())
     m.protocol.pabd_cmh2o = std::max(0.0, r.pabd_cmh2o[a.ics.capacity_row]);
-  if (voiding && !strains(specs, o.simulation)) {
-    m.protocol.voiding_pabd = recorded_voiding_pabd(a);
-    if (!m.protocol.voiding_pabd.empty())
-      notes.push_back(fmt::format(
-          "while voiding the model's abdominal pressure is the recording's ({} readings from "
-          "capacity on): the detrusor makes Pdet, the patient's straining adds to Pves",
-          m.protocol.voiding_pabd.time_s.size()));
-  }
-  if (strains(specs, o.simulation)) {
-    m.protocol.drive = simulate::VoidingDrive::Straining;
-    if (o.simulation.straining_kpa > 0) m.protocol.straining_kpa = o.simulation.straining_kpa;
-  }
-  if (o.simulation.detrusor_kpa > 0)
-    m.material.params["contractility"] = units::pa_from_kpa(o.simulation.detrusor_kpa);
   return m;
+}
+
+// A detrusor-voided model replays the recording's abdominal pressure while it voids.
+void replay_voiding_pabd(const RecordingAnalysis& a, CystometryModel& m,
+                         std::vector<std::string>& notes) {
+  m.protocol.voiding_pabd = recorded_voiding_pabd(a);
+  if (!m.protocol.voiding_pabd.empty())
+    notes.push_back(fmt::format(
+        "while voiding the model's abdominal pressure is the recording's ({} readings from "
+        "capacity on): the detrusor makes Pdet, the patient's straining adds to Pves",
+        m.protocol.voiding_pabd.time_s.size()));
 }
 
 // Whether the fit has both the wall's passive parameters and the voiding's.
@@ -220,15 +209,20 @@ FitOutcome fit_filling_then_voiding(CalibrationProblem pb, const CalibrationTarg
 
 CalibrationResult calibrate_from_options(const CompareOptions& o, const RecordingAnalysis& a,
                                          const ComparisonOptions& comparison) {
-  CalibrationProblem pb;
-  const std::vector<ModelParameter> named = parse_parameters(o.calibrate, o.simulation, false);
-  const bool voiding = std::any_of(named.begin(), named.end(),
-                                   [](const ModelParameter& p) { return p.fit.voiding; });
-  pb.parameters = parse_parameters(o.calibrate, o.simulation,
-                                   material_for(named, o.simulation, voiding) == "bladder");
-  pb.targets = targets_for(o, a, comparison, voiding);
   std::vector<std::string> notes;
-  pb.model = model_for(o, a, pb.parameters, voiding, notes);
+  CalibrationProblem pb;
+  pb.model = model_for(o, a, notes);
+  // The model as it starts: every parameter's value, given or the material's own.
+  const simulate::ModelCard start = simulate::planned_model_card(pb.model.wall, pb.model.material,
+                                                                 pb.model.protocol, pb.model.run);
+  pb.parameters = parse_parameters(o.calibrate, start);
+  const bool voiding = std::any_of(pb.parameters.begin(), pb.parameters.end(),
+                                   [](const ModelParameter& p) { return p.fit.voiding; });
+  if (voiding && strains(pb.parameters, pb.model.protocol))
+    pb.model.protocol.drive = simulate::VoidingDrive::Straining;
+  else if (voiding)
+    replay_voiding_pabd(a, pb.model, notes);
+  pb.targets = targets_for(o, a, comparison, voiding);
   if (a.ics.capacity_ml) pb.data_end_ml = *a.ics.capacity_ml;
   pb.use_surrogate = o.simulation.surrogate;
   pb.budget.surrogate_starts = o.simulation.surrogate_starts;
@@ -238,8 +232,12 @@ CalibrationResult calibrate_from_options(const CompareOptions& o, const Recordin
                        : calibrate(pb);
   if (voiding && out.final_run.recording.rows() > 0)
     out.result.voiding = voiding_agreement(a, out.final_run.recording);
-  notes.push_back(fmt::format("the model fills at {:.3g} ml/min from {:g} ml",
-                              pb.model.protocol.fill_rate_ml_min, pb.model.protocol.start_ml));
+  out.result.fitted_card = out.final_run.card;
+  notes.push_back(fmt::format(
+      "the model fills at {:.3g} ml/min from {:g} ml; material {} ({}), "
+      "stress-free at {:g} ml",
+      pb.model.protocol.fill_rate_ml_min, pb.model.protocol.start_ml, start.material.name,
+      simulate::material_text(start.material), start.reference_volume_ml));
   out.result.notes.insert(out.result.notes.begin(), notes.begin(), notes.end());
   return out.result;
 }

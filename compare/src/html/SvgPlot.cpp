@@ -22,13 +22,37 @@ std::string dash_attribute(const SvgPlot::Series& s) {
   return s.dashed ? " stroke-dasharray=\"8 4\"" : "";
 }
 
-// A series drawn with at most about this many points: a page stays a page however long
-// the recording (two million rows gave a 1.7 GB report).
-constexpr std::size_t kMaxDrawnPoints = 4000;
+std::string slug(const std::string& s) {
+  std::string out;
+  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return "plot-" + out;
+}
 
-// Thins a long series to the lowest and highest point of each run of consecutive points,
-// in their order, so that peaks (Qmax, a cough) survive.
-void thin(std::vector<double>& x, std::vector<double>& y) {
+}  // namespace
+
+std::string svg_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+std::string tick_label(double v, double step) {
+  char buf[32];
+  const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < 1e-9 * step ? 0.0 : v);
+  return buf;
+}
+
+double nice_step(double span, int count) {
+  if (!(span > 0.0) || !std::isfinite(span) || count < 1) return 1.0;
+  const double raw = span / count;
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (raw <= m * p) return m * p;
+  return 10 * p;
+}
+
+void thin_for_page(std::vector<double>& x, std::vector<double>& y) {
   const std::size_t n = std::min(x.size(), y.size());
   if (n <= kMaxDrawnPoints) return;
   const std::size_t run = (n + kMaxDrawnPoints / 2 - 1) / (kMaxDrawnPoints / 2);
@@ -52,33 +76,15 @@ void thin(std::vector<double>& x, std::vector<double>& y) {
   y.swap(ty);
 }
 
-std::string slug(const std::string& s) {
-  std::string out;
-  for (char c : s) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-  return "plot-" + out;
-}
-
-}  // namespace
-
-std::string svg_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
-}
-
-std::string tick_label(double v, double step) {
-  char buf[32];
-  const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step) - 1e-9));
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < 1e-9 * step ? 0.0 : v);
-  return buf;
-}
-
-double nice_step(double span, int count) {
-  const double raw = span / count;
-  const double p = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0})
-    if (raw <= m * p) return m * p;
-  return 10 * p;
+std::vector<double> axis_ticks(double lo, double hi, double step) {
+  std::vector<double> ticks;
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(step > 0.0)) return ticks;
+  for (int k = 0; k < kMaxTicks; ++k) {
+    const double t = lo + k * step;
+    if (t > hi + 1e-9 * step) break;
+    ticks.push_back(t);
+  }
+  return ticks;
 }
 
 // A rounding residue (1e-13 past a tick) does not add a whole step to the axis.
@@ -144,7 +150,7 @@ SvgPlot& SvgPlot::legend_below() {
 }
 
 SvgPlot& SvgPlot::add(Series s) {
-  thin(s.x, s.y);
+  thin_for_page(s.x, s.y);
   if (s.color.empty()) s.color = kPalette[series_.size() % (sizeof kPalette / sizeof *kPalette)];
   series_.push_back(std::move(s));
   return *this;
@@ -249,12 +255,12 @@ std::string SvgPlot::render() const {
     << "font-weight=\"bold\">" << xml_escape(title_) << "</text>\n";
   // grid and ticks
   o << "<g class=\"axes\" stroke=\"#ddd\">\n";
-  for (double t = xr.lo; t <= xr.hi + 1e-9 * xs; t += xs)
+  for (double t : axis_ticks(xr.lo, xr.hi, xs))
     o << "<line x1=\"" << num(X(t)) << "\" y1=\"" << top << "\" x2=\"" << num(X(t)) << "\" y2=\""
       << top + ph << "\"/><text x=\"" << num(X(t)) << "\" y=\"" << top + ph + 16
       << "\" text-anchor=\"middle\" stroke=\"none\" fill=\"#333\">" << tick_label(t, xs)
       << "</text>\n";
-  for (double t = yr.lo; t <= yr.hi + 1e-9 * ys; t += ys)
+  for (double t : axis_ticks(yr.lo, yr.hi, ys))
     o << "<line x1=\"" << left << "\" y1=\"" << num(Y(t)) << "\" x2=\"" << left + pw << "\" y2=\""
       << num(Y(t)) << "\"/><text x=\"" << left - 6 << "\" y=\"" << num(Y(t) + 4)
       << "\" text-anchor=\"end\" stroke=\"none\" fill=\"#333\">" << tick_label(t, ys)

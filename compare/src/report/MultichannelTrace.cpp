@@ -28,6 +28,8 @@ std::size_t MultichannelTrace::add_panel(std::string channel, std::string unit, 
 }
 
 void MultichannelTrace::add_line(std::size_t panel, Line line) {
+  if (line.t.size() > kMaxDrawnPoints) line.radius = 0.0;  // no dot per sample then
+  thin_for_page(line.t, line.y);
   panels_.at(panel).lines.push_back(std::move(line));
 }
 
@@ -52,7 +54,8 @@ MultichannelTrace::Range MultichannelTrace::time_range() const {
       for (double t : l.t)
         if (std::isfinite(t)) lo = std::min(lo, t), hi = std::max(hi, t);
   if (!std::isfinite(lo)) return {0, 1};
-  const double step = nice_step(std::max(hi - lo, 1e-9), 10);
+  if (!(hi - lo >= 1e-6 * std::max(1.0, std::abs(lo)))) hi = lo + 1.0;  // no span: one second
+  const double step = nice_step(hi - lo, 10);
   return {nice_floor(lo, step), nice_ceil(hi, step)};
 }
 
@@ -62,7 +65,9 @@ MultichannelTrace::Range MultichannelTrace::value_range(const Panel& p) const {
     for (double v : l.y)
       if (std::isfinite(v)) lo = std::min(lo, std::max(v, p.floor)), hi = std::max(hi, v);
   if (!std::isfinite(lo)) return {0, 1};
-  if (hi - lo < 1.0) hi = lo + 1.0;  // a flat channel still gets a readable axis
+  // A flat channel still gets a readable axis (also where 1 is lost in a huge value).
+  if (!(hi - lo >= std::max(1.0, 1e-6 * std::abs(lo))))
+    hi = lo + std::max(1.0, 1e-6 * std::abs(lo));
   const double step = nice_step(hi - lo, 3);
   return {nice_floor(lo, step), nice_ceil(hi, step)};
 }
@@ -118,7 +123,7 @@ std::string MultichannelTrace::panel(const Panel& p, const Range& t, double top)
     << xml_escape(p.channel) << "</text><text x=\"8\" y=\"" << top + kPanel / 2 + 13
     << "\" font-size=\"11\" fill=\"#555\">" << xml_escape(p.unit) << "</text>\n";
   const double step = nice_step(v.hi - v.lo, 3);
-  for (double y = v.lo; y <= v.hi + 1e-9 * step; y += step)
+  for (double y : axis_ticks(v.lo, v.hi, step))
     o << "<line x1=\"" << kLeft << "\" x2=\"" << right << "\" y1=\"" << num(Y(y)) << "\" y2=\""
       << num(Y(y)) << "\" stroke=\"#e4e4e4\"/><text x=\"" << kLeft - 4 << "\" y=\"" << num(Y(y) + 4)
       << "\" text-anchor=\"end\" font-size=\"11\">" << tick_label(y, step) << "</text>\n";
@@ -167,7 +172,7 @@ std::string MultichannelTrace::events(const Range& t, double top, double bottom)
 std::string MultichannelTrace::time_axis(const Range& t, double top, double bottom) const {
   std::ostringstream o;
   const double step = nice_step(t.hi - t.lo, 10);
-  for (double s = t.lo; s <= t.hi + 1e-9 * step; s += step)
+  for (double s : axis_ticks(t.lo, t.hi, step))
     o << "<line x1=\"" << num(x_of(t, s)) << "\" x2=\"" << num(x_of(t, s)) << "\" y1=\"" << top
       << "\" y2=\"" << bottom << "\" stroke=\"#eeeeee\"/><text x=\"" << num(x_of(t, s)) << "\" y=\""
       << bottom + 16 << "\" text-anchor=\"middle\" font-size=\"11\">" << tick_label(s, step)

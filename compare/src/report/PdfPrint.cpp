@@ -1,18 +1,19 @@
 #include "vesica/compare/report/PdfPrint.h"
 
-#include <cstdlib>
+#include <chrono>
 #include <fstream>
 
-#include <unistd.h>
-
-#include "report/ShellQuote.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/HelperProgram.h"
 
 namespace vesica::compare {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A page prints in seconds; chromium waiting on something that never comes is stopped.
+constexpr std::chrono::seconds kPrintDeadline{120};
 
 bool starts_like_pdf(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -25,30 +26,28 @@ bool starts_like_pdf(const fs::path& p) {
 
 std::string print_pdf(const fs::path& html, const fs::path& pdf) {
   std::string why;
-  if (std::system("command -v chromium >/dev/null 2>&1") != 0) {
+  if (!find_program("chromium")) {
     why = "chromium is not installed";
   } else {
-    const fs::path profile =
-        fs::temp_directory_path() / ("vesica-compare-chromium-" + std::to_string(::getpid()));
     try {
+      const TemporaryFolder profile("compare-chromium");
       write_atomically(pdf, [&](const fs::path& tmp) {
-        const std::string cmd =
-            "timeout 120 chromium --headless --no-sandbox --disable-gpu "
-            "--disable-background-networking --disable-component-update --no-first-run "
-            "--disable-dev-shm-usage --no-pdf-header-footer --user-data-dir=" +
-            detail::shell_quote(profile.string()) +
-            " --print-to-pdf=" + detail::shell_quote(tmp.string()) + " " +
-            detail::shell_quote("file://" + fs::absolute(html).string()) + " >/dev/null 2>&1";
-        const int status = std::system(cmd.c_str());
-        if (status != 0 || !fs::exists(tmp) || !starts_like_pdf(tmp))
-          fail(pdf.string(),
-               "headless chromium did not print a PDF (exit " + std::to_string(status) + ")");
+        const HelperResult run =
+            run_helper({"chromium", "--headless", "--no-sandbox", "--disable-gpu",
+                        "--disable-background-networking", "--disable-component-update",
+                        "--no-first-run", "--disable-dev-shm-usage", "--no-pdf-header-footer",
+                        "--user-data-dir=" + (profile.path() / "profile").string(),
+                        "--print-to-pdf=" + tmp.string(), "file://" + fs::absolute(html).string()},
+                       profile.path() / "chromium.log", kPrintDeadline);
+        if (run.exit_code != 0 || !fs::exists(tmp) || !starts_like_pdf(tmp))
+          fail(pdf.string(), run.timed_out ? "headless chromium printed no PDF within " +
+                                                 std::to_string(kPrintDeadline.count()) + " s"
+                                           : "headless chromium did not print a PDF (exit " +
+                                                 std::to_string(run.exit_code) + ")");
       });
     } catch (const Error& e) {
       why = e.what();
     }
-    std::error_code ec;
-    fs::remove_all(profile, ec);
   }
   if (!why.empty()) {
     std::error_code ec;

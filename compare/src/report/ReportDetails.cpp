@@ -78,6 +78,12 @@ std::string calibration_table(const CalibrationResult* c) {
     << c->failed_simulations << " failed), " << c->iterations << " iterations; "
     << xml_escape(c->status) << ".</p>\n";
   for (const auto& note : c->notes) o << "<p class=\"note\">" << xml_escape(note) << "</p>\n";
+  if (c->fitted_card)
+    o << "<p id=\"fitted-model\">The fitted model's card is <code>model.json</code> beside this "
+         "page; <code>vesica-simulate MESH --model-card model.json</code> runs it again: "
+      << xml_escape(c->fitted_card->material.name) << " ("
+      << xml_escape(simulate::material_text(c->fitted_card->material))
+      << "), voiding: " << xml_escape(simulate::voiding_drive_text(*c->fitted_card)) << ".</p>\n";
   return o.str();
 }
 

@@ -8,6 +8,7 @@
 #include "report/ReportParts.h"
 #include "vesica/compare/html/SvgPlot.h"
 #include "vesica/core/StageRecord.h"
+#include "vesica/simulate/ModelCard.h"
 
 namespace vesica::compare::report {
 namespace {
@@ -16,23 +17,6 @@ namespace fs = std::filesystem;
 
 std::string row(const std::string& name, const std::string& value_html) {
   return "<tr><th>" + xml_escape(name) + "</th><td>" + value_html + "</td></tr>\n";
-}
-
-// Material parameter names as a reader writes them.
-std::string parameter_name(const std::string& key) {
-  if (key == "mu") return "&mu;";
-  if (key == "K_per_mu") return "K/&mu;";
-  if (key.rfind("beta", 0) == 0) return "&beta;" + key.substr(4);
-  if (key.rfind("tau", 0) == 0) return "&tau;" + key.substr(3);
-  return xml_escape(key);
-}
-
-std::string material(const SimulationSettings& s) {
-  std::string text = s.material == "neo-hookean" ? "neo-Hookean" : xml_escape(s.material);
-  for (std::size_t i = 0; i < s.material_parameters.size(); ++i)
-    text += (i ? ", " : ": ") + parameter_name(s.material_parameters[i].first) + " = " +
-            xml_escape(s.material_parameters[i].second);
-  return text;
 }
 
 std::string recording_card(const ReportInputs& in) {
@@ -57,63 +41,97 @@ std::string recording_card(const ReportInputs& in) {
   return o.str();
 }
 
-std::string outlet(const SimulationSettings& s) {
-  if (!s.p_open_cmh2o) return "not recorded";
-  return "opens at " + number(*s.p_open_cmh2o) +
-         " cmH2O; above it P &minus; p<sub>open</sub> = " + "R1 Q + R2 Q&sup2; with R1 = " +
-         (s.r1_cmh2o_s_per_ml ? number(*s.r1_cmh2o_s_per_ml) : "?") + " cmH2O&middot;s/ml, R2 = " +
-         (s.r2_cmh2o_s2_per_ml2 ? number(*s.r2_cmh2o_s2_per_ml2) : "?") +
-         " cmH2O&middot;s&sup2;/ml&sup2;";
+std::string kpa(double pa) {
+  return number(pa / 1e3) + " kPa";
 }
 
-std::string filling(const SimulationSettings& s) {
-  if (!s.start_ml || !s.capacity_ml) return "not recorded";
-  std::string text = number(*s.start_ml) + " &rarr; " + number(*s.capacity_ml) + " ml";
-  if (s.fill_rate_ml_min) text += " at " + number(*s.fill_rate_ml_min) + " ml/min";
-  if (s.residual_ml) text += " (stress-free wall at " + number(*s.residual_ml) + " ml)";
+std::string material(const simulate::MaterialCard& m) {
+  std::string text = m.name + ": &mu; = " + kpa(m.mu_pa) + ", K = " + kpa(m.k_pa);
+  if (m.fibers) text += ", k1 = " + kpa(m.k1_pa) + ", k2 = " + number(m.k2);
+  for (std::size_t a = 0; a < m.branches.size(); ++a)
+    text += ", &beta;" + std::to_string(a + 1) + " = " + number(m.branches[a].beta) + ", &tau;" +
+            std::to_string(a + 1) + " = " + number(m.branches[a].tau_s) + " s";
+  if (m.has_muscle())
+    text +=
+        "; detrusor muscle: contractility " + kpa(m.contractility_pa) + ", tone " + kpa(m.tone_pa);
+  else
+    text += "; no active muscle";
   return text;
 }
 
-std::string mesh(const SimulationSettings& s) {
-  if (!s.triangles) return "not recorded";
-  std::string text = std::to_string(*s.triangles) + " wall triangles";
-  if (s.nodes) text += ", " + std::to_string(*s.nodes) + " nodes";
-  if (s.mean_edge_mm) text += ", mean edge " + number(*s.mean_edge_mm, 2) + " mm";
+std::string reference(const simulate::ModelCard& c) {
+  const std::string how =
+      c.wall.reference == simulate::ReferenceState::Scale
+          ? "the image scaled to " + number(c.wall.residual_ml) + " ml"
+          : "the image prestressed at " + number(c.protocol.image_pressure_cmh2o) + " cmH2O";
+  return how + ": " + number(c.reference_volume_ml) + " ml";
+}
+
+std::string outlet(const simulate::ProtocolSettings& p) {
+  return std::string(simulate::urethra_law_name(p)) + ": opens at " + number(p.p_open_cmh2o) +
+         " cmH2O, closes at " + number(p.p_close_cmh2o) +
+         " cmH2O; above closing P &minus; p<sub>close</sub> = R1 q + R2 q&sup2; with R1 = " +
+         number(p.r1_cmh2o_s_per_ml) + " cmH2O&middot;s/ml, R2 = " + number(p.r2_cmh2o_s2_per_ml2) +
+         " cmH2O&middot;s&sup2;/ml&sup2;" +
+         (p.urethra_half_open_cmh2o > 0
+              ? ", half open " + number(p.urethra_half_open_cmh2o) + " cmH2O above closing"
+              : "");
+}
+
+std::string filling(const simulate::ProtocolSettings& p) {
+  return number(p.start_ml) + " &rarr; " + number(p.capacity_ml) + " ml at " +
+         number(p.fill_rate_ml_min) + " ml/min";
+}
+
+std::string voiding(const simulate::ModelCard& c) {
+  std::string text = xml_escape(simulate::voiding_drive_text(c));
+  if (c.protocol.void_after_fill && !c.protocol.voiding_pabd.empty())
+    text += "; the abdominal pressure as recorded";
   return text;
+}
+
+std::string mesh(const simulate::ModelCard& c) {
+  std::string text = std::to_string(c.mesh.triangles) + " wall triangles, " +
+                     std::to_string(c.mesh.nodes) + " nodes, mean edge " +
+                     number(c.mesh.mean_edge_mm, 2) + " mm";
+  if (c.mesh.tetrahedra) text += ", " + std::to_string(c.mesh.tetrahedra) + " urine tetrahedra";
+  if (!c.mesh.file.empty())
+    text += " (" + xml_escape(std::filesystem::path(c.mesh.file).filename().string()) + ")";
+  return text;
+}
+
+const char* level_name(int level) {
+  if (level == 0) return "level 0: the wall's sphere-equivalent";
+  if (level == 2) return "level 2: Navier&ndash;Stokes";
+  return "level 1: hydrostatic volume";
+}
+
+void card_rows(const simulate::ModelCard& c, std::ostringstream& o) {
+  o << row("Wall material", material(c.material));
+  o << row("Wall thickness", number(c.mean_thickness_mm) + " mm on average");
+  o << row("Stress-free wall", reference(c));
+  o << row("Filling", filling(c.protocol));
+  o << row("Voiding driven by", voiding(c));
+  o << row("Urethra", outlet(c.protocol));
+  o << row("Mesh", mesh(c));
+  o << row("Urine model", level_name(c.numerics.level));
+  for (const simulate::LevelHandOver& h : c.hand_overs)
+    o << row("Hand-over", xml_escape(simulate::hand_over_text(h)) +
+                              " (docs/simulate.md, &ldquo;Levels and their hand-overs&rdquo;)");
 }
 
 std::string model_card(const ReportInputs& in) {
   std::ostringstream o;
-  o << "<section class=\"card\"><h2>Model</h2><table class=\"facts\">\n";
+  o << "<section class=\"card\" id=\"model-card\"><h2>Model</h2><table class=\"facts\">\n";
   o << row("Simulation", xml_escape(in.simulated->recording.source));
-  if (!in.settings || in.settings->manifest.empty()) {
-    o << row("Settings",
-             "<span class=\"missing\">no manifest of vesica-simulate lists this "
-             "history.csv: the settings are unknown</span>");
-  }
-  if (in.settings) {
-    const SimulationSettings& s = *in.settings;
-    if (!s.material.empty()) o << row("Wall material", material(s));
-    o << row("Wall thickness", s.thickness_mm ? number(*s.thickness_mm) + " mm (" +
-                                                    xml_escape(s.thickness_source) + ")"
-                                              : "not recorded");
-    o << row("Filling", filling(s));
-    o << row("Voiding driven by", xml_escape(s.voiding_drive()));
-    o << row("Outlet", outlet(s));
-    o << row("Mesh", mesh(s));
-    if (s.level)
-      o << row("Urine model",
-               *s.level == 2 ? "level 2: Navier&ndash;Stokes" : "level 1: hydrostatic volume");
-    if (s.voiding_tail_from_ml)
-      o << row("Tail of voiding",
-               "from " + number(*s.voiding_tail_from_ml) +
-                   " ml on, the wall's sphere-equivalent (level 0): the wall could not take a "
-                   "voiding step there (docs/simulate.md)");
-    if (!s.version.empty())
-      o << row("Simulated by",
-               "vesica " + xml_escape(s.version) +
-                   (s.finished_utc.empty() ? "" : ", " + xml_escape(s.finished_utc)));
-  }
+  if (in.model && in.model->card)
+    card_rows(*in.model->card, o);
+  else
+    o << row("Settings", "<span class=\"missing\">no model card: " +
+                             xml_escape(in.model ? in.model->problem : "not read") +
+                             "; the settings are unknown</span>");
+  if (in.model && !in.model->version.empty())
+    o << row("Simulated by", "vesica " + xml_escape(in.model->version));
   o << "</table></section>\n";
   return o.str();
 }
@@ -139,25 +157,24 @@ std::string number(const nlohmann::json& v, int significant) {
   return "&ndash;";
 }
 
+// The card of the simulated recording, when it has one.
+const simulate::ModelCard* simulated_card(const ReportInputs& in) {
+  return in.simulated && in.model && in.model->card ? &*in.model->card : nullptr;
+}
+
 bool simulated_void_is_straining(const ReportInputs& in) {
-  if (!in.simulated) return false;
-  if (in.settings && !in.settings->manifest.empty()) return in.settings->straining();
-  // Without settings: straining shows as Pabd rising while the bladder empties.
-  const Recording& r = in.simulated->recording;
-  const std::size_t c = in.simulated->ics.capacity_row;
-  if (r.pabd_cmh2o.empty() || c + 1 >= r.rows()) return false;
-  for (std::size_t i = c + 1; i < r.rows(); ++i)
-    if (r.pabd_cmh2o[i] > r.pabd_cmh2o[c] + 2.0) return true;
-  return false;
+  const simulate::ModelCard* c = simulated_card(in);
+  return c && c->protocol.void_after_fill && c->protocol.drive == simulate::VoidingDrive::Straining;
 }
 
 std::string simulated_voiding_label(const ReportInputs& in) {
-  const bool straining = simulated_void_is_straining(in);
-  const bool detrusor = in.settings && in.settings->detrusor();
-  if (straining && detrusor) return "voiding by detrusor contraction and straining";
-  if (straining) return "voiding by abdominal straining";
-  if (detrusor) return "voiding by detrusor contraction";
-  return "voiding";
+  const simulate::ModelCard* c = simulated_card(in);
+  if (!c || !c->protocol.void_after_fill) return "voiding";
+  if (c->protocol.drive == simulate::VoidingDrive::Straining)
+    return "voiding by abdominal straining";
+  return c->protocol.voiding_pabd.empty()
+             ? "voiding by detrusor contraction"
+             : "voiding by detrusor contraction, abdominal pressure as recorded";
 }
 
 std::string header_section(const ReportInputs& in) {

@@ -47,6 +47,19 @@ std::string section(const std::string& title, const std::string& body, bool toge
          "</h2>\n" + body + "</section>\n";
 }
 
+// The plausibility rules' warnings on the measured recording (docs/compare.md), above
+// everything computed from it.
+std::string plausibility_section(const ReportInputs& in) {
+  if (!in.measured || in.measured->warnings.empty()) return "";
+  std::ostringstream o;
+  o << "<ul class=\"warnings\">\n";
+  for (const auto& w : in.measured->warnings)
+    o << "<li><b>" << xml_escape(w.rule) << "</b>: " << xml_escape(w.message) << "</li>\n";
+  o << "</ul>\n<p class=\"note\">Each is a plausibility rule of docs/compare.md; the numbers "
+       "below are computed as the recording's columns say.</p>\n";
+  return section("Check the recording", o.str(), true);
+}
+
 }  // namespace
 
 std::string report_html(const ReportInputs& in) {
@@ -64,6 +77,7 @@ std::string report_html(const ReportInputs& in) {
     << (in.measured && in.simulated ? " and " : "") << (in.simulated ? "bladder model" : "")
     << "</h1>\n";
   o << header_section(in);
+  o << plausibility_section(in);
   o << section("Trace", trace_section(in), true);
   o << section("Filling, flow and pressure-flow", plots_section(in), false);
   o << section("Parameters", parameter_section(in), true);

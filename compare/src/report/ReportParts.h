@@ -3,6 +3,8 @@
 // helpers they share.
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/compare/report/ReportPage.h"
 
 namespace vesica::compare::report {
@@ -17,9 +19,10 @@ std::string number(double v, int significant = 3);
 std::string number(const nlohmann::json& v, int significant = 3);
 
 // "voiding by abdominal straining" / "voiding by detrusor contraction" / "voiding": what
-// drove the simulated void, from its settings or, without them, from its Pabd.
+// drove the simulated void, from its model card alone ("voiding" without one).
 std::string simulated_voiding_label(const ReportInputs& in);
 bool simulated_void_is_straining(const ReportInputs& in);
+const simulate::ModelCard* simulated_card(const ReportInputs& in);
 
 std::string header_section(const ReportInputs& in);
 std::string trace_section(const ReportInputs& in);

@@ -82,6 +82,9 @@ std::vector<MultichannelTrace::Phase> phases(const RecordingAnalysis& a, double 
   return out;
 }
 
+// Numbered markers on the trace and in its list, at most.
+constexpr std::size_t kMaxMarkers = 100;
+
 std::vector<Marker> markers(const ReportInputs& in, bool timed, double m_start, double s_start) {
   std::vector<Marker> out;
   if (const RecordingAnalysis* m = timed ? in.measured : nullptr) {
@@ -139,7 +142,10 @@ std::string trace_section(const ReportInputs& in) {
     trace.add_phase_row("simulated",
                         phases(*in.simulated, s_start, simulated_voiding_label(in), "#fdae6b"));
   }
-  const std::vector<Marker> list = markers(in, timed, m_start, s_start);
+  std::vector<Marker> list = markers(in, timed, m_start, s_start);
+  // A recording that labels every row an event keeps its page a page: the first ones only.
+  const std::size_t more = list.size() > kMaxMarkers ? list.size() - kMaxMarkers : 0;
+  list.resize(list.size() - more);
   for (const Marker& m : list) trace.add_event({m.t, m.color});
   std::ostringstream o;
   o << "<figure class=\"wide\">" << trace.render()
@@ -148,7 +154,10 @@ std::string trace_section(const ReportInputs& in) {
        "markers, with the time on each recording's own clock (mm:ss, as in its rows):"
     << (in.measured && !timed ? " The measured table has no time column and is not shown here."
                               : "")
-    << "</figcaption>" << marker_list(list) << "</figure>\n";
+    << "</figcaption>" << marker_list(list)
+    << (more ? "<p class=\"note\">" + std::to_string(more) + " further events not shown</p>\n"
+             : std::string())
+    << "</figure>\n";
   return o.str();
 }
 

@@ -6,8 +6,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
@@ -29,15 +27,17 @@
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
 
-#include "report/ShellQuote.h"
 #include "vesica/compare/analysis/WallStress.h"
 #include "vesica/compare/html/Viridis.h"
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/HelperProgram.h"
 
 // VTK's render window and text classes come from object factories that must be
 // registered explicitly in a plain (non-vtk_module_autoinit) build.
 #include <vtkAutoInit.h>
+
+#include <nlohmann/json.hpp>
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
 VTK_MODULE_INIT(vtkRenderingFreeType);
 
@@ -45,6 +45,9 @@ namespace vesica::compare {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A picture of a wall takes seconds; a renderer stuck on a display is stopped.
+constexpr std::chrono::seconds kRenderDeadline{120};
 
 std::string read_bytes(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -320,27 +323,28 @@ WallStressPicture make_wall_stress_picture(const fs::path& vtu, const fs::path& 
     return pic;
   }
   pic.colour_bar_kpa = colour_bar_range(pic.summary);
-  const fs::path dir = fs::temp_directory_path() / ("vesica-compare-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path png = dir / "wall-stress.png", log = dir / "render.log";
-  std::string cmd = detail::shell_quote(executable.string()) + " --render-wall-stress " +
-                    detail::shell_quote(vtu.string()) + " --render-png " +
-                    detail::shell_quote(png.string());
+  // The renderer runs as a child (VTK's off-screen window may abort the process), without
+  // a shell, writing into a folder only this process made.
+  std::vector<std::string> argv = {executable.string(), "--render-wall-stress", vtu.string(),
+                                   "--render-png"};
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display) {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) {
-      fs::remove_all(dir);
+    if (!find_program("xvfb-run")) {
       pic.message = "no wall-stress picture: no X display and xvfb-run is not installed";
       return pic;
     }
-    cmd = "xvfb-run -a " + cmd;
+    argv.insert(argv.begin(), {"xvfb-run", "-a"});
   }
-  const int status =
-      std::system((cmd + " >" + detail::shell_quote(log.string()) + " 2>&1").c_str());
-  const std::string bytes = fs::exists(png) ? read_bytes(png) : std::string();
-  std::string out = read_bytes(log);
-  fs::remove_all(dir);
-  if (status != 0 || bytes.size() < 8) {
+  const TemporaryFolder dir("compare");
+  const fs::path png = dir.path() / "wall-stress.png";
+  argv.push_back(png.string());
+  const HelperResult run = run_helper(argv, dir.path() / "render.log", kRenderDeadline);
+  std::error_code ec;
+  const std::string bytes = fs::is_regular_file(png, ec) ? read_bytes(png) : std::string();
+  if (run.exit_code != 0 || bytes.size() < 8) {
+    std::string out = run.timed_out
+                          ? "no picture within " + std::to_string(kRenderDeadline.count()) + " s"
+                          : run.output;
     if (out.size() > 300) out = out.substr(out.size() - 300);
     pic.message = "no wall-stress picture: off-screen rendering failed (" + out + ")";
     return pic;

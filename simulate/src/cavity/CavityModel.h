@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cavity/UrethraLaw.h"
+#include "vesica/simulate/ModelCard.h"
 #include "vesica/simulate/wall/WallModel.h"
 #include "vesica/simulate/wall/WallStress.h"
 
@@ -100,10 +101,15 @@ class CavityModel {
   // One timed step. Converged: the model has moved to its end. Not converged: the state is
   // as before the attempt, so that the protocol may retry a shorter step.
   virtual StepResult try_step(const StepRequest& step) = 0;
-  // A voiding step failed after all cut-backs with the urethra open: whether the model
-  // hands the rest of its voiding over to a simpler one it carries on as (level 1 to its
-  // sphere-equivalent, docs/simulate.md "The tail of voiding"), noting it; false: no.
-  virtual bool hand_over_voiding(const std::string& /*failure*/) { return false; }
+  // A voiding step failed after all cut-backs with the urethra open, at the protocol's
+  // time_s: whether the model hands the rest of its voiding over to a simpler one it carries
+  // on as (level 1 to its sphere-equivalent, docs/simulate.md "The tail of voiding"),
+  // noting it; false: no.
+  virtual bool hand_over_voiding(const std::string& /*failure*/, double /*time_s*/) {
+    return false;
+  }
+  // Every hand-over between levels so far, in order (the model card's).
+  virtual std::vector<LevelHandOver> hand_overs() const { return {}; }
   // A voiding step failed after all cut-backs: the note that ends voiding there without
   // failing the run (where the model cannot follow the wall any further), or "" to fail.
   virtual std::string voiding_end_note(const std::string& /*failure*/) const { return ""; }

@@ -212,7 +212,7 @@ std::vector<MembraneStressOutput> HydrostaticCavity::wall_stresses() const {
 // The wall's last converged state goes on as the sphere-equivalent's: the same volume, the
 // same bookkeeping base, the fibers' last shortening rate, and its Pdet scaled to the
 // wall's. The protocol then steps the tail as it stepped the wall.
-bool HydrostaticCavity::hand_over_voiding(const std::string& failure) {
+bool HydrostaticCavity::hand_over_voiding(const std::string& failure, double time_s) {
   if (tail_ || !(dt_before_ > 0.0) || x_before_.size() != x_.size()) return false;
   LumpedCavity::WallState state;
   state.volume_m3 = volume_;
@@ -233,6 +233,7 @@ bool HydrostaticCavity::hand_over_voiding(const std::string& failure) {
   tail_ = std::move(tail);
   x_handed_ = x_;
   V_handed_ = volume_;
+  time_handed_ = time_s;
   handed_because_ = failure;
   std::ostringstream note;
   note.precision(4);
@@ -273,6 +274,12 @@ void HydrostaticCavity::add_summary(nlohmann::json& summary) const {
                              {"from_ml", units::ml_from_m3(V_handed_)},
                              {"pressure_scale", tail_->pressure_scale()},
                              {"wall_failure", handed_because_}};
+}
+
+std::vector<LevelHandOver> HydrostaticCavity::hand_overs() const {
+  if (!tail_) return {};
+  return {{1, 0, units::ml_from_m3(V_handed_), time_handed_,
+           "the wall could not take a voiding step (" + handed_because_ + ")"}};
 }
 
 std::vector<std::string> HydrostaticCavity::take_notes() {

@@ -47,7 +47,8 @@ class HydrostaticCavity final : public CavityModel {
   // A voiding step the wall cannot take: the rest of voiding runs on the wall's
   // sphere-equivalent (LumpedCavity, level 0) from the wall's state, its pressure matched
   // to the wall's; the note and the summary's "voiding_tail" say from where.
-  bool hand_over_voiding(const std::string& failure) override;
+  bool hand_over_voiding(const std::string& failure, double time_s) override;
+  std::vector<LevelHandOver> hand_overs() const override;
   // Below the stress-free volume a failed voiding step ends voiding: the wall is slack
   // there and its tension field may have no solution (docs/simulate.md).
   std::string voiding_end_note(const std::string& failure) const override;
@@ -104,7 +105,7 @@ class HydrostaticCavity final : public CavityModel {
   // was handed over (its frames are that wall scaled to the tail's volume), and why.
   std::unique_ptr<LumpedCavity> tail_;
   std::vector<Eigen::Vector3d> x_handed_;
-  double V_handed_ = 0.0;
+  double V_handed_ = 0.0, time_handed_ = 0.0;
   std::string handed_because_;
   std::vector<std::string> notes_;
 };

@@ -21,9 +21,9 @@
 namespace vesica::simulate::fluid {
 namespace {
 
-// Below this radius ratio the ALE mesh is rebuilt (docs/navier-stokes.md §1), with the
-// tetrahedron count of the mesh read within this fraction.
-constexpr double kRemeshRadiusRatio = 0.1;
+// A rebuilt ALE mesh has the tetrahedron count of the mesh read within this fraction (the
+// radius ratio that triggers it: Level2Options::remesh_radius_ratio, docs/navier-stokes.md
+// §1).
 constexpr double kRemeshCountTolerance = 0.1;
 // Cut-backs of a failed step (each halves it), and frames while voiding.
 constexpr int kMaxCutbacks = 5;
@@ -34,14 +34,6 @@ constexpr double kVoidFrameIntervalS = 0.5;
 // level 1's, whose quasi-static wall has no other limit.
 constexpr double kVoidStepMl = 20.0;
 constexpr double kSlackVoidStepMl = 5.0;
-
-// Fault injection for tests of a resumed run (docs/simulate.md, "Checkpoint and resume"):
-// VESICA_SIMULATE_REMESH_AT_S=t rebuilds the tetrahedra once, at the first step ending at
-// or after t (s), whatever their quality.
-bool remesh_forced(double time_s, int remeshes) {
-  const char* t = std::getenv("VESICA_SIMULATE_REMESH_AT_S");
-  return t && remeshes == 0 && time_s >= std::atof(t);
-}
 
 std::vector<std::array<int, 3>> region_faces(const WallModel& wall, Region region) {
   std::vector<std::array<int, 3>> faces;
@@ -258,11 +250,22 @@ void NavierStokesCavity::hand_over(const StepRequest& step, const std::string& f
   collapse_ = std::move(level1);
   collapse_time_s_ = step.end_time_s - step.dt_s;
   collapse_volume_ = V;
+  collapse_reason_ = failure;
   notes_.push_back("level 2 voided to " + std::to_string(units::ml_from_m3(V)) +
                    " ml, below the stress-free volume, where the slack wall folds into the "
                    "urine mesh (" +
                    failure + "); level 1 continued the voiding from there");
   vesica::log()->info("{}", notes_.back());
+}
+
+std::vector<LevelHandOver> NavierStokesCavity::hand_overs() const {
+  if (!collapse_) return {};
+  std::vector<LevelHandOver> list = {
+      {2, 1, units::ml_from_m3(collapse_volume_), collapse_time_s_,
+       "below the stress-free volume the slack wall folds into the urine mesh (" +
+           collapse_reason_ + ")"}};
+  for (LevelHandOver& h : collapse_->hand_overs()) list.push_back(std::move(h));
+  return list;
 }
 
 std::string NavierStokesCavity::voiding_end_note(const std::string& failure) const {
@@ -288,9 +291,9 @@ double NavierStokesCavity::mesh_quality() const {
 void NavierStokesCavity::check_mesh(double time_s) {
   const double q = mesh_quality();
   min_quality_ = std::min(min_quality_, q);
-  const double threshold =
-      built_quality_ > kRemeshRadiusRatio ? kRemeshRadiusRatio : 0.5 * built_quality_;
-  if (q >= threshold && !remesh_forced(time_s, remeshes_)) return;
+  const double below = options_.level2.remesh_radius_ratio;
+  const double threshold = built_quality_ > below ? below : 0.5 * built_quality_;
+  if (q >= threshold) return;
   remesh(time_s, q);
 }
 

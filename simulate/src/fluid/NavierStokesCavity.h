@@ -52,6 +52,7 @@ class NavierStokesCavity final : public CavityModel {
   void start_clock() override;
   StepResult try_step(const StepRequest& step) override;
   std::string voiding_end_note(const std::string& failure) const override;
+  std::vector<LevelHandOver> hand_overs() const override;
 
   double volume() const override;
   double pves() const override;
@@ -104,6 +105,7 @@ class NavierStokesCavity final : public CavityModel {
   ProtocolLoads committed_loads_;  // the protocol's loads of the last converged step
   double V_start_ = 0.0;           // urine volume when the clock started (m³)
   double collapse_time_s_ = -1.0, collapse_volume_ = 0.0;  // of the hand-over
+  std::string collapse_reason_;
   Inflow inflow_;
   std::vector<std::array<int, 3>> outlet_faces_;
   std::vector<OutletJetRow> jet_;  // one per converged step with the urethra open

@@ -1,19 +1,17 @@
 #include "protocol/Checkpoint.h"
 
 #include <csignal>
-#include <cstdlib>
 #include <sstream>
 
+#include "solver/StopRequest.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Log.h"
 
 namespace vesica::simulate {
 namespace {
 
-volatile std::sig_atomic_t g_stop_signal = 0;
-
 extern "C" void note_stop_signal(int signal) {
-  g_stop_signal = signal;
+  request_stop(signal);
 }
 
 struct sigaction g_previous_term, g_previous_int;
@@ -46,13 +44,12 @@ const char* signal_label(int signal) {
 
 Checkpointer::Checkpointer(const RunOptions::Checkpoints& options)
     : options_(options), last_(std::chrono::steady_clock::now()) {
-  g_stop_signal = 0;
+  request_stop(0);
   struct sigaction action {};
   action.sa_handler = note_stop_signal;
   sigemptyset(&action.sa_mask);
   sigaction(SIGTERM, &action, &g_previous_term);
   sigaction(SIGINT, &action, &g_previous_int);
-  if (const char* k = std::getenv("VESICA_SIMULATE_STOP_AFTER_STEPS")) stop_after_ = std::atol(k);
   std::error_code ec;  // a new run's frames replace any earlier run's
   if (!options.resume) std::filesystem::remove_all(frames_folder(options), ec);
 }
@@ -108,11 +105,10 @@ Checkpointer::~Checkpointer() {
   sigaction(SIGINT, &g_previous_int, nullptr);
 }
 
-bool Checkpointer::due() {
-  if (++steps_ == stop_after_) std::raise(SIGTERM);
+bool Checkpointer::due() const {
   const double minutes =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - last_).count() / 60.0;
-  return g_stop_signal != 0 || minutes >= options_.interval_min;
+  return stop_requested() || minutes >= options_.interval_min;
 }
 
 void Checkpointer::write(const CheckpointWriter& state, double time_s, const std::string& phase) {
@@ -124,7 +120,7 @@ void Checkpointer::write(const CheckpointWriter& state, double time_s, const std
 }
 
 void Checkpointer::stop_if_signalled() const {
-  const int signal = g_stop_signal;
+  const int signal = stop_signal();
   if (!signal) return;
   std::ostringstream what;
   what << "interrupted by " << signal_label(signal);

@@ -1,13 +1,11 @@
 #pragma once
 // When a running cystometry writes its checkpoint (docs/simulate.md, "Checkpoint and
-// resume"): every RunOptions::Checkpoints::interval_min minutes of compute, and at the end
-// of the step during which SIGTERM or SIGINT arrived, after which the run stops with the
-// signal's conventional status (128 + signal). The handlers only set a flag: the state is
-// consistent only between steps. The file itself is CheckpointFile.h's.
-//
-// Fault injection, for tests of an interrupted run: when the environment variable
-// VESICA_SIMULATE_STOP_AFTER_STEPS is set to K, the process sends itself SIGTERM after its
-// K-th checkpointable step, so that a test stops it at a known step through the real path.
+// resume"): every RunOptions::Checkpoints::interval_min minutes of compute, and when SIGTERM
+// or SIGINT arrives, after which the run stops with the signal's conventional status
+// (128 + signal). The handlers only set a flag (StopRequest.h): the Newton loop abandons
+// the step in progress at its next iteration, and the checkpoint holds the last completed
+// step. The file itself is CheckpointFile.h's. (A test stops a run at a known step through
+// this real path by raising SIGTERM from its progress callback, RunOptions::on_progress.)
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
@@ -31,7 +29,7 @@ class Checkpointer {
   Checkpointer& operator=(const Checkpointer&) = delete;
 
   // After a step that may be checkpointed: whether a checkpoint is due now.
-  bool due();
+  bool due() const;
   // Writes the state of a run standing at time_s (s) in `phase`.
   void write(const CheckpointWriter& state, double time_s, const std::string& phase);
   // The output folder's files so far (the series' frames), kept beside the checkpoint
@@ -45,7 +43,6 @@ class Checkpointer {
  private:
   const RunOptions::Checkpoints& options_;
   std::chrono::steady_clock::time_point last_;
-  long steps_ = 0, stop_after_ = -1;
   double last_time_s_ = -1.0;  // of the last checkpoint written (s)
 };
 

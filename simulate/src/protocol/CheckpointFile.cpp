@@ -5,12 +5,13 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <limits>
 #include <sstream>
 
+#include "vesica/core/AtomicOutput.h"
 #include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
+#include "vesica/core/InputFile.h"
 
 namespace fs = std::filesystem;
 
@@ -185,7 +186,11 @@ Eigen::SparseMatrix<double> CheckpointReader::sparse(const std::string& name) {
   const std::vector<std::int64_t> rows = integers(name + ".rows"),
                                   cols = integers(name + ".columns");
   const std::vector<double> values = numbers(name + ".values");
-  if (n < 0 || rows.size() != values.size() || cols.size() != values.size())
+  // A system's matrix has an entry on every row: no more rows than the file has bytes
+  // (Eigen allocates an index per row before any entry is read).
+  if (n < 0 || n > std::numeric_limits<int>::max() ||
+      static_cast<std::uint64_t>(n) > bytes_.size() || rows.size() != values.size() ||
+      cols.size() != values.size())
     reject("the state field " + name + " is not a sparse matrix");
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(values.size());
@@ -223,8 +228,8 @@ void write_checkpoint(const fs::path& path, const nlohmann::json& identity,
   bytes += sha256_hex(bytes);
 
   fs::create_directories(path.parent_path());
-  const fs::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const fs::path tmp = temporary_sibling(path);  // a new name: never a planted link
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd < 0)
     fail(tmp.string(), std::string("cannot write the checkpoint: ") + std::strerror(errno));
   try {
@@ -249,9 +254,9 @@ CheckpointFile read_checkpoint(const fs::path& path) {
   const auto refuse = [&file](const std::string& problem) {
     fail(file, problem, "remove it to start the simulation from the beginning");
   };
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(file, "no checkpoint to resume from");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::error_code ec;
+  if (!fs::exists(path, ec)) fail(file, "no checkpoint to resume from");
+  const std::string bytes = read_input_file(path, kMaxMeshFileBytes, "checkpoint");
   if (bytes.size() < kMagicSize || bytes.compare(0, kMagicSize, kMagic) != 0)
     refuse("not a vesica checkpoint");
   if (bytes.size() < kMagicSize + kChecksumSize) refuse("truncated checkpoint");
@@ -273,6 +278,9 @@ CheckpointFile read_checkpoint(const fs::path& path) {
   } catch (const std::exception&) {
     refuse("the checkpoint's identity is not JSON");
   }
+  if (!out.identity.is_object() ||
+      (out.identity.contains("run") && !out.identity["run"].is_object()))
+    refuse("the checkpoint's identity is not the object vesica writes");
   at += id_size;
   if (!take(bytes, at, state_size) || state_size != body - at)
     refuse("the checkpoint's state size does not match the file");

@@ -12,12 +12,23 @@
 #include "vesica/core/AtomicOutput.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/ModelCardJson.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
 #include "wall/PrestressReference.h"
 
 namespace vesica::simulate {
 namespace {
+
+// The mean edge of the wall's triangles (mm), each edge counted once per triangle.
+double mean_edge_mm(const WallModel& wall) {
+  double sum = 0.0;
+  for (const auto& t : wall.triangles)
+    for (int k = 0; k < 3; ++k) sum += (wall.nodes[t[k]] - wall.nodes[t[(k + 1) % 3]]).norm();
+  return wall.triangles.empty()
+             ? 0.0
+             : units::mm_from_m(sum / (3.0 * static_cast<double>(wall.triangles.size())));
+}
 
 // The largest stretch the protocol may ask of the reference wall (volume ratio λ³).
 constexpr double kMaxMeanStretch = 4.0;
@@ -88,12 +99,17 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
   validate(settings, options);
   if (options.level == 2 && !urine)
     usage_error("level 2 needs the urine tetrahedra", "mesh with vesica-mesh --fluid");
-  const std::unique_ptr<Material> material = make_material(spec);
+  // The card says what runs: the material is built from its resolved values.
+  ModelCard card = planned_model_card(given_wall, spec, settings, options);
+  const std::unique_ptr<Material> material = build_material(card.material);
   WallModel wall = given_wall;
   if (options.reference == ReferenceState::Prestress)
     wall = prestressed_reference(
         wall, *material, units::pa_from_cmh2o(settings.image_pressure_cmh2o), options.threads);
-  validate(settings, options, units::ml_from_m3(enclosed_volume(wall, wall.nodes)));
+  card.reference_volume_ml = units::ml_from_m3(enclosed_volume(wall, wall.nodes));
+  card.mesh.mean_edge_mm = mean_edge_mm(wall);
+  validate(settings, options, card.reference_volume_ml);
+  if (urine) card.mesh.tetrahedra = static_cast<long>(urine->tets.size());
   // The cavity model; a new one is one class (CavityModel.h) and one case here.
   std::unique_ptr<CavityModel> model;
   if (options.level == 2)
@@ -104,9 +120,35 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
   else
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
   CystometryResult result = CystometryProtocol(settings, options).run(*model);
+  card.hand_overs = model->hand_overs();
+  result.card = std::move(card);
+  result.summary["model_card"] = result.card;
   if (!options.output_dir.empty())
     write_labelled_history(result, options.output_dir / "history.csv");
   return result;
+}
+
+ModelCard planned_model_card(const WallModel& wall, const MaterialSpec& material,
+                             const ProtocolSettings& settings, const RunOptions& options) {
+  ModelCard card;
+  card.material = resolve_material(material);
+  card.wall = wall.options;
+  card.wall.reference = options.reference;
+  card.wall.posture = settings.posture;
+  card.reference_volume_ml = units::ml_from_m3(enclosed_volume(wall, wall.nodes));
+  card.protocol = settings;
+  card.numerics = numerics_of(options);
+  card.mesh.file = wall.source_file;
+  card.mesh.hash = wall.source_hash;
+  card.mesh.triangles = static_cast<long>(wall.triangle_count());
+  card.mesh.nodes = static_cast<long>(wall.node_count());
+  card.mesh.mean_edge_mm = mean_edge_mm(wall);
+  double thickness = 0.0;
+  for (double h : wall.thickness) thickness += h;
+  if (!wall.thickness.empty())
+    card.mean_thickness_mm =
+        units::mm_from_m(thickness / static_cast<double>(wall.thickness.size()));
+  return card;
 }
 
 std::string history_label(const CystometryResult& result) {
@@ -120,8 +162,10 @@ std::string history_label(const CystometryResult& result) {
 }
 
 void write_labelled_history(const CystometryResult& result, const std::filesystem::path& csv) {
-  write_text_atomically(csv, "# vesica-simulate cystometry, " + history_label(result) + "\n" +
-                                 io::history_csv_text(result.history));
+  std::string header = "# vesica-simulate cystometry, " + history_label(result) + "\n";
+  for (const std::string& line : model_card_lines(result.card))
+    header += "# model card: " + line + "\n";
+  write_text_atomically(csv, header + io::history_csv_text(result.history));
 }
 
 }  // namespace vesica::simulate

@@ -7,7 +7,10 @@
 #include <sstream>
 #include <utility>
 
+#include <nlohmann/json.hpp>
+
 #include "protocol/Checkpoint.h"
+#include "solver/StopRequest.h"
 #include "vesica/core/Log.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/protocol/CystometrySummary.h"
@@ -54,10 +57,6 @@ std::string no_drive_note(const ProtocolSettings& settings) {
   if (settings.drive == VoidingDrive::Straining && settings.straining_kpa <= 0.0)
     return "no voiding: the drive is straining but straining_kpa is 0";
   return "";
-}
-
-std::string drive_name(VoidingDrive drive) {
-  return drive == VoidingDrive::Detrusor ? "detrusor" : "straining";
 }
 
 // The progress line after a history row ("filling 120 ml") and the fraction of the
@@ -180,6 +179,7 @@ void CystometryProtocol::step_to_volume(double V) {
     }
     failure = r.failure;
   }
+  if (checkpointer_) checkpointer_->stop_if_signalled();  // settling: before any checkpoint
   throw StepFailed("no equilibrium at " + std::to_string(units::ml_from_m3(V)) + " ml (" + failure +
                    ")");
 }
@@ -187,6 +187,8 @@ void CystometryProtocol::step_to_volume(double V) {
 StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
   std::string failure;
   int cut = 0;
+  // The state before this step: a stop during it is checkpointed here, the last step done.
+  const std::optional<CheckpointWriter> before = last_step_state();
   for (;; ++cut, dt *= 0.5) {
     StepRequest step;
     step.dt_s = dt;
@@ -209,6 +211,10 @@ StepResult CystometryProtocol::advance(double dt, double q_in, bool outlet) {
       return r;
     }
     failure = r.failure;
+    if (checkpointer_ && stop_requested()) {  // the model is back where the step began
+      write_checkpoint_of(before);
+      checkpointer_->stop_if_signalled();
+    }
     if (cut == rules_.max_cutbacks) break;
     // While voiding, a step at the shortest cut-back step fails at once.
     if (voiding_ && dt < 2.0 * rules_.min_cut_void_step_s) {
@@ -301,7 +307,7 @@ void CystometryProtocol::void_bladder() {
     } catch (const StepFailed& e) {
       // With the urethra open a model may go on as a simpler one (the wall's tail of
       // voiding on its sphere-equivalent); the same step is tried again on it.
-      if (urethra_open_ && model_->hand_over_voiding(e.what())) {
+      if (urethra_open_ && model_->hand_over_voiding(e.what(), time_)) {
         take_notes();
         continue;
       }

@@ -10,12 +10,14 @@
 #include <cstddef>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "cavity/CavityModel.h"
 #include "cavity/UrethraLaw.h"
 #include "protocol/ActivationCurve.h"
+#include "vesica/simulate/protocol/CheckpointFile.h"
 #include "vesica/simulate/protocol/Cystometry.h"
 
 namespace vesica::simulate {
@@ -69,6 +71,10 @@ class CystometryProtocol {
   // After a filling or holding step's row: writes a checkpoint when one is due, and stops
   // the run (RunInterrupted) when a signal asked for it.
   void checkpoint_if_due();
+  // The checkpoint state of the run as it stands (filling or hold; none otherwise), and its
+  // writing: a stop during a step writes the state taken before it.
+  std::optional<CheckpointWriter> last_step_state() const;
+  void write_checkpoint_of(const std::optional<CheckpointWriter>& state);
 
   const ProtocolSettings& settings_;
   const RunOptions& options_;

@@ -114,14 +114,22 @@ bool CystometryProtocol::resume_if_asked() {
 
 void CystometryProtocol::checkpoint_if_due() {
   if (!checkpointer_) return;
-  if (checkpointer_->due()) {
-    CheckpointWriter out;
-    save_state(out);
-    model_->save_state(out);
-    checkpointer_->keep_outputs(options_.output_dir);  // the frames the checkpoint lists
-    checkpointer_->write(out, time_, phase_name(static_cast<int>(phase_)));
-  }
+  if (checkpointer_->due()) write_checkpoint_of(last_step_state());
   checkpointer_->stop_if_signalled();
+}
+
+std::optional<CheckpointWriter> CystometryProtocol::last_step_state() const {
+  if (!checkpointer_ || (phase_ != Phase::Filling && phase_ != Phase::Hold)) return std::nullopt;
+  CheckpointWriter out;
+  save_state(out);
+  model_->save_state(out);
+  return out;
+}
+
+void CystometryProtocol::write_checkpoint_of(const std::optional<CheckpointWriter>& state) {
+  if (!state) return;                                // settling or voiding: no checkpoints there
+  checkpointer_->keep_outputs(options_.output_dir);  // the frames the checkpoint lists
+  checkpointer_->write(*state, time_, phase_name(static_cast<int>(phase_)));
 }
 
 }  // namespace vesica::simulate

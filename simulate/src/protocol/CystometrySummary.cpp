@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "vesica/core/Units.h"
 
 namespace vesica::simulate {

@@ -5,6 +5,8 @@
 #include <exception>
 #include <utility>
 
+#include "solver/StopRequest.h"
+
 namespace vesica::simulate {
 
 NewtonLoop::NewtonLoop(const NewtonOptions& options, ElasticFoundation foundation)
@@ -36,6 +38,11 @@ NewtonReport NewtonLoop::solve(NewtonSystem& system) {
   const bool tests_residual = system.tests_residual();
   for (int it = 0;; ++it) {
     report.iterations = it;
+    count_iteration();
+    if (stop_requested()) {  // a stop within one iteration, not at the end of the step
+      report.failure = "stopped by a signal";
+      return report;
+    }
     const bool increment_ok = system.increment_converged(it, last_move);
     if (!tests_residual && (increment_ok || it == budget(report))) {
       report.converged = increment_ok;

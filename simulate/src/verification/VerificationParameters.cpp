@@ -1,5 +1,5 @@
-// vesica-simulate's entries for the verification protocols (docs/physics.md §6), the
-// volumetric law (§2.3) and the FEBio export: see VerificationParameters.h.
+// vesica-simulate's entries for the verification protocols (docs/physics.md §6) and the
+// FEBio export: see VerificationParameters.h.
 #include "verification/VerificationParameters.h"
 
 #include "vesica/simulate/SimulateSettings.h"
@@ -7,9 +7,6 @@
 namespace vesica::simulate {
 
 void add_verification_entries(SimulateSettings& s, ParameterTable& t) {
-  t.number("beta_vol", s.beta_vol, "-", NumberRange::at_least(0).at_most(50),
-           "Ogden volumetric exponent beta (docs/physics.md §2.3); 0 = K/2 (ln J)^2, "
-           "FEBio's volumetric law");
   VerificationSettings& v = s.verification;
   t.choice("protocol", v.protocol, {"cystometry", "pressure-steps", "volume-steps"},
            "cystometry, or a verification: the closed wall as it is (no scaling), stepped by "
@@ -20,8 +17,12 @@ void add_verification_entries(SimulateSettings& s, ParameterTable& t) {
            NumberRange::greater_than(0).at_most(1000), "pressure-steps: the last pressure");
   t.number("max_stretch", v.max_stretch, "-", NumberRange::greater_than(1).at_most(10),
            "volume-steps: the last stretch (V/V0)^(1/3)");
-  t.text("export_feb", s.export_feb, "FILE.feb",
-         "also write the wall problem as an FEBio 4 input (README, FEBio)");
+  t.output_file("export_feb", s.export_feb, "FILE.feb",
+                "after the run, also write what ran as an FEBio 4 input: the wall, its material "
+                "and the pressures vesica computed (docs/simulate.md, FEBio)");
+  t.flag("febio_approximate", s.febio_approximate,
+         "export_feb: write FEBio's nearest law, with a warning, where FEBio has none equal to "
+         "vesica's (else an error naming the parameter)");
 }
 
 }  // namespace vesica::simulate

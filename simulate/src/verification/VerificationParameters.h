@@ -1,5 +1,5 @@
 #pragma once
-// The parameter-table entries of the verification protocols, the volumetric law and the
+// The parameter-table entries of the verification protocols and the
 // FEBio export (issue 25), kept apart from the cystometry's entries (SimulateParameters.cpp).
 #include "vesica/core/ParameterTable.h"
 

@@ -31,6 +31,19 @@ MembraneGeometry membrane_geometry(const std::array<Eigen::Vector3d, 3>& X, doub
   return geo;
 }
 
+std::array<Eigen::Vector3d, 2> element_fibers(const MembraneGeometry& geo, const WallModel& wall,
+                                              std::size_t e) {
+  std::array<Eigen::Vector3d, 2> fibers{Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
+  if (e < wall.fibers.size()) {
+    for (int f = 0; f < 2; ++f) {
+      Eigen::Vector3d a = geo.frame * wall.fibers[e][f];
+      a.z() = 0.0;
+      if (a.norm() > 1e-6) fibers[f] = a.normalized();
+    }
+  }
+  return fibers;
+}
+
 MembraneResponse membrane_response(const MembraneGeometry& geo,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,

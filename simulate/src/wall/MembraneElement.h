@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "vesica/simulate/materials/Material.h"
+#include "vesica/simulate/wall/WallModel.h"
 #include "vesica/simulate/wall/WallStress.h"
 #include "wall/PlaneStress.h"
 
@@ -25,6 +26,12 @@ struct MembraneGeometry {
 
 // X: reference node positions (m). Throws std::invalid_argument for a degenerate triangle.
 MembraneGeometry membrane_geometry(const std::array<Eigen::Vector3d, 3>& X, double H);
+
+// The two fiber directions of element e in its frame (docs/physics.md §2.4): the mesh's
+// fiber1, fiber2 rotated into the frame and projected into its plane, else (no fibers,
+// or one normal to the element) the frame's own e1, e2. Unit, in-plane.
+std::array<Eigen::Vector3d, 2> element_fibers(const MembraneGeometry& geometry,
+                                              const WallModel& wall, std::size_t e);
 
 // What one element gives at the current positions x (m). With tension_field the stress is
 // the wrinkling membrane's (TensionField.h), else the plain plane-stress law's.

@@ -17,17 +17,9 @@ std::array<Eigen::Vector3d, 3> corners(const std::vector<Eigen::Vector3d>& x,
   return {x[t[0]], x[t[1]], x[t[2]]};
 }
 
-// Fiber directions in the element frame: the mesh's (projected into the plane) or the
-// frame's own e1, e2 when the mesh gives none.
 MaterialPoint element_point(const MembraneGeometry& geo, const WallModel& wall, std::size_t e) {
   MaterialPoint p;
-  if (e < wall.fibers.size()) {
-    for (int f = 0; f < 2; ++f) {
-      Eigen::Vector3d a = geo.frame * wall.fibers[e][f];
-      a.z() = 0.0;
-      if (a.norm() > 1e-6) p.fibers[f] = a.normalized();
-    }
-  }
+  p.fibers = element_fibers(geo, wall, e);
   return p;
 }
 

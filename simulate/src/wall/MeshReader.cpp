@@ -8,6 +8,7 @@
 #include "vesica/core/Log.h"
 #include "vesica/core/Regions.h"
 #include "vesica/core/Units.h"
+#include "vesica/io/BladderScale.h"
 #include "vesica/io/MshFile.h"
 #include "vesica/io/SurfaceFile.h"
 #include "vesica/io/VtuFile.h"
@@ -137,6 +138,8 @@ WallModel read_wall(const std::filesystem::path& path, double default_thickness_
   if (m.triangles.rows() == 0)
     fail(path.string(), "contains no triangles", "the wall must be a triangle surface");
   detail::check_wall_surface(m, path.string());
+  io::check_surface_span((m.nodes.colwise().maxCoeff() - m.nodes.colwise().minCoeff()).maxCoeff(),
+                         path.string());  // a wall in m or µm is refused, not simulated
   if (source_of(path) == Source::Msh) {
     fill_in_membrane_fields(default_thickness_m, m, path.string());
     warn_if_vtu_beside_is_stale(path, m);

@@ -1,5 +1,6 @@
 #include "vesica/simulate/wall/WallLoading.h"
 
+#include "vesica/core/ContentHash.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Units.h"
 #include "vesica/simulate/wall/MeshReader.h"
@@ -23,6 +24,12 @@ WallModel load_wall(const std::filesystem::path& path, const WallOptions& option
   }
   const Eigen::Vector3d down = gravity_lps(options.posture).normalized();
   fix_regions(wall, down, units::m_from_mm(options.fixed_patch_radius_mm));
+  wall.source_file = path.string();
+  wall.source_hash = content_hash(path);
+  wall.options = options;
+  // What ran: a fraction's residual volume, so the model card names the volume it scaled to.
+  if (options.reference == ReferenceState::Scale && options.residual_fraction > 0.0)
+    wall.options.residual_ml = units::ml_from_m3(enclosed_volume(wall, wall.nodes));
   return wall;
 }
 

@@ -8,18 +8,17 @@
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/recording/Artefacts.h"
 #include "vesica/core/StageMain.h"
+#include "vesica/simulate/SimulateSettings.h"
 
 namespace vesica::compare {
 
-// The level-1 model the calibration simulates (values at the start of the fit).
+// The model the calibration starts from: the one vesica-simulate runs with the same options
+// (docs/compare.md, "Calibration"): the material (--material, default the bladder wall)
+// with its own parameters unless given, the wall's thickness and stress-free volume, the
+// start volume, the voiding drive and the urethra. Each fitted parameter starts from its
+// value there.
 struct CalibrationModel {
-  double mu_kpa = 5.0;
-  double k_kpa = 0.0;  // 0 ("auto" on the command line): K = 1000 mu, following mu as it is fitted
-  double thickness_mm = 3.0;
-  double start_ml = 50.0;
-  // Voiding drive while voiding is fitted and the drive is not (0: the simulation's default).
-  double straining_kpa = 0.0;
-  double detrusor_kpa = 0.0;
+  simulate::SimulateSettings model;
   bool surrogate = true;      // the two-stage fit's fast surrogate search first
   int surrogate_starts = 16;  // starting points of the surrogate search
 };

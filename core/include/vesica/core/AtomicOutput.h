@@ -11,6 +11,7 @@
 // Fault injection, for tests of what a failed write leaves behind: when the environment
 // variable VESICA_FAIL_WRITE is set, an output whose file name contains its value fails
 // as a full disk would, after its writer ran and before it is renamed into place.
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -20,8 +21,15 @@
 namespace vesica {
 
 // A temporary path beside `target` that keeps its full extension (".nii.gz", ".vtp"),
-// because ITK and VTK choose the file format from the name.
+// because ITK and VTK choose the file format from the name. Its name holds 64 random bits:
+// no one can have planted a link there beforehand (the writers open it by name).
 std::filesystem::path temporary_sibling(const std::filesystem::path& target);
+
+// Writes `bytes` to a new file at `path`, which must not exist: created with O_EXCL and
+// O_NOFOLLOW, so that a link planted there is an error, never followed. Throws
+// vesica::Error naming `target`.
+void write_new_file(const std::filesystem::path& path, const std::string& bytes,
+                    const std::filesystem::path& target);
 
 // Calls write(tmp) with a temporary path; the writer creates a file or a folder there.
 // Then checks and fsyncs what was written (a folder gets vesica's marker) and renames it
@@ -32,6 +40,13 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& target);
 // same target are removed first.
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
+
+// For a writer that cannot report a failed write (GDCM asserts and aborts on a full disk):
+// throws vesica::Error naming `target` when the folder it goes to has less free space than
+// `total_bytes`, or the file-size limit (ulimit -f) is below `largest_file_bytes`, before
+// anything is written.
+void require_room_for(const std::filesystem::path& target, std::uintmax_t total_bytes,
+                      std::uintmax_t largest_file_bytes);
 
 // Convenience for text outputs (JSON, CSV, HTML); the written size is checked.
 void write_text_atomically(const std::filesystem::path& target, const std::string& text);

@@ -33,6 +33,9 @@ struct Parameter {
   NumberRange range;                 // Number, Integer
   std::vector<std::string> choices;  // Choice
   std::string syntax;                // Text: the accepted form
+  // Text: the value names a file the stage writes (`export_feb`): the runner keeps it
+  // inside the workdir and backs up what is there, as for the stage's output.
+  bool names_output = false;
   nlohmann::json default_value;
 
   // Parses, checks and stores `text`; throws ParameterValueError saying what is wrong.

@@ -16,6 +16,10 @@ class App;
 
 namespace vesica {
 
+// The help group of the options that name a file the stage writes (Parameter::
+// names_output): run_stage_main never takes their values for inputs to protect.
+inline constexpr const char* kOutputOptionGroup = "Outputs";
+
 // The table must outlive the parse: options store into the fields it is bound to.
 void add_parameter_options(CLI::App& app, ParameterTable& table);
 

@@ -62,6 +62,17 @@ class ParameterTable {
                     std::function<nlohmann::json()> value);
   // A named input file (`--measured F`): a command-line option, not a parameter.
   Parameter& input(const std::string& name, std::string& path, const std::string& help);
+  // Free text naming a file the stage writes besides its output (Parameter::names_output).
+  Parameter& output_file(const std::string& name, std::string& path, const std::string& syntax,
+                         const std::string& help);
+
+  // A file the stage always writes beside its output, named from the output's path by
+  // `rule` ("" when none for that output): declared here so that the runner backs it up
+  // and checks it like the output itself. `description` says it in words for the docs.
+  using SideOutputRule = std::function<std::string(const std::string& output)>;
+  void beside_output(const std::string& description, SideOutputRule rule);
+  // The side outputs of `output`, by every rule.
+  std::vector<std::string> side_outputs(const std::string& output) const;
 
   const std::string& tool() const { return tool_; }
   const std::deque<Parameter>& entries() const { return entries_; }
@@ -72,7 +83,8 @@ class ParameterTable {
 
   // Every parameter's effective value by name (inputs excluded): the manifest's parameters.
   nlohmann::json values() const;
-  // {"tool", "parameters": [Parameter::describe()...], "inputs": [...]}
+  // {"tool", "parameters": [Parameter::describe()...], "inputs": [...], "side_outputs":
+  // [descriptions]}
   nlohmann::json describe() const;
 
   // Keeps the settings the entries are bound to alive as long as the table.
@@ -88,6 +100,7 @@ class ParameterTable {
   Parameter& add(Parameter parameter);
 
   std::string tool_;
+  std::vector<std::pair<std::string, SideOutputRule>> side_outputs_;  // description, rule
   std::deque<Parameter> entries_;  // a deque: entries keep their address while it grows
   std::shared_ptr<const void> owner_;
 };

@@ -53,6 +53,11 @@ struct CsvTable {
   std::size_t row_count() const { return rows.size(); }
 };
 
+// The comment lines ('#' removed) before the header row, at most `max_lines` of them, each
+// within the line bound (a longer one is an error, as for the rows).
+std::vector<std::string> read_leading_comments(const std::filesystem::path& csv,
+                                               std::size_t max_lines = 200);
+
 // The whole table in memory (read_csv_rows's rules and errors).
 CsvTable read_csv_table(const std::filesystem::path& csv, const CsvOptions& options = {});
 

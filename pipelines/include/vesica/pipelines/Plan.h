@@ -23,6 +23,9 @@ struct PlannedStage {
   std::vector<std::string> argv;    // arguments after the program, exactly as passed
   std::vector<std::string> inputs;  // relative to the workdir (or absolute)
   std::string output;               // relative to the workdir
+  // Files written besides the output: the tool's declared side outputs and the files its
+  // parameters name (export_feb), relative to the workdir; backed up like the output.
+  std::vector<std::string> side_outputs;
   std::string report;
   std::string manifest;
   std::vector<Param> params;
@@ -35,16 +38,16 @@ struct Plan {
   std::filesystem::path workdir;  // absolute
   std::vector<PlannedStage> stages;
   std::vector<std::string> unchecked_tools;  // tools without a parameter table: params unchecked
-  std::string question;            // the study's design question (study.csv/.html)
-  std::vector<StudyLimit> limits;  // and what answers it "pass"
+  std::string question;                      // the study's design question (study.csv/.html)
+  std::vector<StudyLimit> limits;            // and what answers it "pass"
 
   // Index of the stage with this id, or -1.
   long index_of(const std::string& id) const;
   // The stages a user means by `name`: the stage with that id, or every study copy of the
   // stage with that name. Throws vesica::Error (usage) with a suggestion when none.
   std::vector<std::size_t> named(const std::string& name) const;
-  // Index of the stage that writes `path` (or the folder containing it, or the report), or
-  // -1; O(log n) after the first call.
+  // Index of the stage that writes `path` (or the folder containing it, a side output, or
+  // the report), or -1; O(log n) after the first call.
   long producer_of(const std::string& path) const;
   // Every stage downstream of `index` (not including it).
   std::vector<std::size_t> downstream_of(std::size_t index) const;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vesica/pipelines/Plan.h"
 
@@ -22,6 +23,10 @@ bool stage_can_resume(const PlannedStage& s);
 // The stage's checkpoint when it is readable, intact and of the stage's present inputs
 // (content hashes) and arguments; nullopt otherwise (never throws).
 std::optional<StageCheckpoint> resumable_checkpoint(const Plan& plan, const PlannedStage& s);
+// A stage's arguments without --resume, which the runner adds to continue an interrupted
+// run: not a parameter (a resumed stage is as fresh as one run whole), never a reason to run.
+std::vector<std::string> without_resume(const std::vector<std::string>& argv);
+
 // "interrupted (checkpoint at t = 75 s)".
 std::string checkpoint_status(const StageCheckpoint& c);
 

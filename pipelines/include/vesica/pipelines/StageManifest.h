@@ -30,6 +30,10 @@ struct StageManifest {
 // writing a folder may record the files it wrote there, as vesica-simulate does).
 bool recorded(const std::vector<FileRecord>& records, const std::string& path);
 
+// True for a relative path that stays inside the workdir ("a/b", not "/x", "..", "../x"):
+// what an output record of a manifest or failure record must be to be trusted.
+bool stays_inside_workdir(const std::string& path);
+
 // nullopt when there is no manifest at `path`.
 std::optional<StageManifest> read_stage_manifest(const std::filesystem::path& path);
 

@@ -22,6 +22,10 @@ std::string lock_path();
 // The folder of one backup: .vesica/backup/<id>/<stamp>, `stamp` a UTC time.
 std::string backup_folder(const std::string& id, const std::string& stamp);
 
+// Makes WORKDIR/.vesica when missing. Throws vesica::Error when it is a symbolic link or
+// not a folder: vesica's state, backups and lock are never written through a link.
+void require_state_folder(const std::filesystem::path& workdir);
+
 // True for `.vesica` and every path inside it.
 bool is_state_path(const std::string& workdir_relative);
 

@@ -3,6 +3,7 @@
 // the command line names it (clinical units), how the imaged wall becomes the reference,
 // the protocol and how it is computed. Header-only settings (std and Eigen), so that the
 // table's library links core only.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,36 +13,39 @@
 
 namespace vesica::simulate {
 
-// A material parameter not given: the material's own default (MaterialRegistry.h).
+// A material parameter not given: the material's own default (ParameterCatalogue.h).
 constexpr double kMaterialDefault = -1.0;
 
+// The wall material as the parameter table takes it (docs/physics.md §2): the named
+// material and the parameters given, each by its catalogue name in its catalogue unit
+// (kPa where the library takes Pa). A parameter not given (kMaterialDefault, or no Maxwell
+// branch list) is the named material's own; material_spec() (SimulateParameters.h) turns
+// it into the library's MaterialSpec.
+struct MaterialChoice {
+  std::string name = "bladder";
+  std::map<std::string, double> values;                 // mu, k, k1, ..., contractility, ...
+  std::map<std::string, std::vector<double>> branches;  // beta, tau: one per Maxwell branch
+
+  bool given(const std::string& parameter) const {
+    const auto v = values.find(parameter);
+    if (v != values.end()) return v->second != kMaterialDefault;
+    const auto b = branches.find(parameter);
+    return b != branches.end() && !b->second.empty();
+  }
+};
+
 struct SimulateSettings {
-  // Wall material (docs/physics.md §2), in kPa where the library takes Pa; every
-  // parameter defaults to the named material's own value (kMaterialDefault).
-  std::string material = "bladder";
-  double mu_kpa = kMaterialDefault;
-  double k_kpa = kMaterialDefault;  // the material's: K = 1000 mu, nearly incompressible
-  double k1_kpa = kMaterialDefault;
-  double k2 = kMaterialDefault;
-  std::vector<double> beta;   // Maxwell branch strengths (-); none given: the material's
-  std::vector<double> tau_s;  // their relaxation times (s), as many as beta
-  // The detrusor muscle (docs/physics.md §2.6): nominal active stress at rest and added at
-  // full activation (kPa), length–tension optimum and width, Hill's a/T0 and v_max (1/s).
-  double tone_kpa = kMaterialDefault;
-  double detrusor_kpa = kMaterialDefault;
-  double optimal_stretch = kMaterialDefault;
-  double stretch_width = kMaterialDefault;
-  double hill_a = kMaterialDefault;
-  double hill_vmax_per_s = kMaterialDefault;
+  MaterialChoice material;
   WallOptions wall;           // thickness, reference state, residual volume
   ProtocolSettings protocol;  // the cystometry and the surroundings
   // One posture for both: the wall's fixed patch (WallOptions) and gravity (ProtocolSettings).
   Posture posture = Posture::Supine;
   RunOptions run;  // level, dynamics, level-2 steps, series
-  // Issue 25: the volumetric law, the verification protocols and the FEBio export.
-  double beta_vol = 9.0;  // Ogden β; 0 = K/2 (ln J)² (docs/physics.md §2.3)
+  // Issue 25: the verification protocols and the FEBio export.
   VerificationSettings verification;
   std::string export_feb;  // empty = none
+  // FEBio's nearest law, with a warning, where it has none equal to vesica's (FebioExport.h).
+  bool febio_approximate = false;
 };
 
 }  // namespace vesica::simulate

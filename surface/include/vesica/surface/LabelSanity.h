@@ -6,7 +6,11 @@
 //  - enclosed cavities (a hollow label, a shell) filled: the bladder is the urine inside
 //    the wall, so the volume is the enclosed one;
 //  - at least min_volume_ml and kMinVoxels voxels in the piece kept, so that the surface
-//    has some shape of its own (a one-voxel label is not a bladder).
+//    has some shape of its own (a one-voxel label is not a bladder), and at most
+//    io::kMaxBladderMl (a voxel size not in mm);
+//  - not the background: a label covering most of the image's border is refused as
+//    inverted; one that reaches the border gets a note that it may be cut there
+//    (vesica/io/LabelBorder.h).
 // The volume reported and rescaled to is then the kept, filled piece's.
 #include <cstddef>
 #include <string>
@@ -28,6 +32,7 @@ struct LabelCleanup {
   int components = 0;              // pieces found before the choice
   std::size_t dropped_voxels = 0;  // voxels of the pieces dropped
   std::size_t filled_voxels = 0;   // voxels of the cavities filled
+  bool touches_border = false;     // the kept label reaches a face of the image
   std::vector<std::string> notes;  // what was changed, for the summary
 };
 

@@ -3,10 +3,11 @@
 // (unflagged) filling curve Pdet(V).
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/IcsParameters.h"
 #include "vesica/compare/recording/Artefacts.h"
+#include "vesica/compare/recording/Plausibility.h"
 #include "vesica/compare/recording/Recording.h"
 
 namespace vesica::compare {
@@ -17,6 +18,8 @@ struct RecordingAnalysis {
   std::vector<bool> flagged;
   IcsParameters ics;
   Curve filling;  // (volume ml, Pdet cmH2O), unflagged filling rows
+  // What the plausibility rules found short of a refusal (measured recordings only).
+  std::vector<PlausibilityWarning> warnings;
 };
 
 // What the caller knows that a table may not say (0: not given).
@@ -30,7 +33,13 @@ struct RecordingFacts {
 RecordingAnalysis analyse(Recording recording, const ArtefactOptions& options = {},
                           const RecordingFacts& facts = {});
 
-// {"source", "rows", "parameters", "artefacts": [{line, event, kind, detail}]}
+// The recording checked by the plausibility rules (Plausibility.h: a refusal throws), then
+// analysed; the rules' warnings, the compliance rule's included, in `warnings`.
+RecordingAnalysis analyse_checked(Recording recording, const ArtefactOptions& options = {},
+                                  const RecordingFacts& facts = {});
+
+// {"source", "rows", "parameters", "artefacts": [{line, event, kind, detail}],
+//  "plausibility_warnings": [{rule, message}]}
 nlohmann::json to_json(const RecordingAnalysis& a);
 
 }  // namespace vesica::compare

@@ -5,7 +5,7 @@
 // on a 0.5 s grid over the longer of the two flow periods (a run's flow is zero outside its
 // own). The aligned flow curves are the data of the report's plot of both. A recording
 // without time gives no flow time, correlation or curves.
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/IcsParameters.h"
 #include "vesica/compare/analysis/RecordingAnalysis.h"

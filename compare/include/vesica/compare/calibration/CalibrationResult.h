@@ -3,15 +3,17 @@
 // whether the data identify them; per series of the data its RMSE beside the constant and
 // straight-line baselines; the stages and their simulations (failures counted, never
 // hidden); the verdict; the fitted curves and the voiding read-outs for the report.
-// Independent of the simulator, so that the report can show it without linking simulate.
+// Independent of the simulator (the model card is simulate's core-only record), so that the
+// report can show it without linking simulate.
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/IcsParameters.h"
 #include "vesica/compare/analysis/VoidingAgreement.h"
+#include "vesica/simulate/ModelCard.h"
 
 namespace vesica::compare {
 
@@ -61,6 +63,9 @@ struct CalibrationResult {
   std::vector<std::string> notes;  // failures, unidentifiable parameters, the solver's end
   Curve fitted_filling;            // (volume ml, Pdet cmH2O) of the fitted model
   std::optional<VoidingAgreement> voiding;  // when voiding was fitted
+  // The fitted model's card (the run of fitted_filling): fit/model.json, which
+  // `vesica-simulate --model-card` runs again to the same curve.
+  std::optional<simulate::ModelCard> fitted_card;
 };
 
 nlohmann::json to_json(const CalibrationResult& r);

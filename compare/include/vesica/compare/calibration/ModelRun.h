@@ -4,10 +4,12 @@
 // fit (TwoStageFit.h) calls a fast surrogate and the reported model through this one
 // signature, so that a new model is wired in without touching the fit.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "vesica/compare/recording/Recording.h"
+#include "vesica/simulate/ModelCard.h"
 
 namespace vesica::compare {
 
@@ -16,6 +18,7 @@ struct ModelRun {
   bool completed = false;          // reached the end of its protocol
   std::string failure;             // why not ("step failed at t = .. s, V = .. ml: ...")
   std::vector<std::string> notes;  // the simulation's notes (e.g. a tail of voiding at level 0)
+  std::optional<simulate::ModelCard> card;  // what ran, when a simulator's run says it
 };
 
 using ModelSimulator = std::function<ModelRun(const std::vector<double>& values)>;

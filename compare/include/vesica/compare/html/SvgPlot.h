@@ -87,12 +87,24 @@ class SvgPlot {
   std::vector<Mark> marks_;
 };
 
+// A line is drawn with at most about this many points: a page stays a page however long
+// the recording (two million rows gave an 850 MB report). The data keep every sample.
+inline constexpr std::size_t kMaxDrawnPoints = 4000;
+// Thins a longer line to the lowest and highest point of each run of consecutive points,
+// in their order, so that peaks (Qmax, a cough) survive.
+void thin_for_page(std::vector<double>& x, std::vector<double>& y);
+
 // Escapes &, <, >, " for XML/HTML text and attributes.
 std::string xml_escape(const std::string& text);
 
 // Axis helpers shared by the plots: a 1, 2 or 5 times a power of ten giving about `count`
-// intervals over `span`; a tick label as short as the step allows; a coordinate.
+// intervals over `span` (a span that is not a positive number gets 1); a tick label as
+// short as the step allows; a coordinate.
 double nice_step(double span, int count);
+// The ticks lo, lo + step, ... up to hi, counted, never more than kMaxTicks: a loop that
+// adds a step too small to change a large value would otherwise never end.
+inline constexpr int kMaxTicks = 200;
+std::vector<double> axis_ticks(double lo, double hi, double step);
 // `value` rounded down / up to a multiple of `step`.
 double nice_floor(double value, double step);
 double nice_ceil(double value, double step);

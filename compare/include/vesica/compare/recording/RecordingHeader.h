@@ -19,8 +19,9 @@ struct RecordingHeader {
 };
 
 RecordingHeader parse_recording_header(const std::vector<std::string>& comment_lines);
-// The leading '#' lines of `csv` (empty when it cannot be read: the recording reader
-// reports that).
+// The leading '#' lines of `csv`, read within the CSV reader's bounds (empty when it
+// cannot be read: the recording reader reports that). Scanned word by word, never with a
+// regular expression: a header line is unbounded user text.
 RecordingHeader read_recording_header(const std::filesystem::path& csv);
 
 }  // namespace vesica::compare

@@ -9,11 +9,11 @@
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/compare/analysis/SexSpecificCriteria.h"
-#include "vesica/compare/analysis/SimulationSettings.h"
+#include "vesica/compare/analysis/SimulatedModel.h"
 #include "vesica/compare/calibration/CalibrationResult.h"
 #include "vesica/compare/report/FluidJetPicture.h"
 #include "vesica/compare/report/WallStressPicture.h"
@@ -39,8 +39,8 @@ struct ReportInputs {
   std::filesystem::path three_js_dir;            // where three.min.js is inlined from
   const nlohmann::json* comparison = nullptr;    // compare_models(), or none
   PatientFacts patient;
-  std::optional<SimulationSettings> settings;  // of the simulated recording
-  std::string generated_utc;                   // when the report was made
+  std::optional<SimulatedModel> model;  // of the simulated recording
+  std::string generated_utc;            // when the report was made
 };
 
 std::string report_html(const ReportInputs& in);

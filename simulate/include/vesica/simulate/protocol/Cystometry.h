@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vesica/io/HistoryCsv.h"
+#include "vesica/simulate/ModelCard.h"
 #include "vesica/simulate/materials/Material.h"
 #include "vesica/simulate/protocol/CystometrySettings.h"
 #include "vesica/simulate/wall/WallLoading.h"
@@ -50,6 +51,7 @@ struct CystometryResult {
   bool completed = false;          // false: a step failed after cut-backs; see failure
   std::string failure;             // "step failed at t = .. s, V = .. ml: <reason>"
   std::vector<std::string> notes;  // what the user should know (e.g. no voiding drive)
+  ModelCard card;                  // what ran (also the summary's "model_card")
 };
 
 // Throws vesica::Error (usage) for settings or options no run can follow (both levels).
@@ -68,13 +70,19 @@ CystometryResult run_cystometry(const WallModel& wall, const MaterialSpec& mater
                                 const ProtocolSettings& settings, const RunOptions& options,
                                 const fluid::FluidMesh* urine = nullptr);
 
+// The model card of a run before it runs (ModelCard.h): the material resolved, the wall's
+// source and reference options, the protocol and numerics; no hand-over yet, and the
+// reference volume of the wall as given (run_cystometry's card has the prestressed one).
+ModelCard planned_model_card(const WallModel& wall, const MaterialSpec& material,
+                             const ProtocolSettings& settings, const RunOptions& options);
+
 // What emptied the bladder, from the summary's voiding_drive: "voided by detrusor
 // contraction", "voided by abdominal straining" or "not voided".
 std::string history_label(const CystometryResult& result);
 
-// history.csv (io's text, HistoryCsv.h) after a '#' comment line "# vesica-simulate
-// cystometry, <history_label>" saying which drive voided (the readers skip comment lines),
-// written atomically.
+// history.csv (io's text, HistoryCsv.h) after '#' comment lines (the readers skip them):
+// "# vesica-simulate cystometry, <history_label>" saying which drive voided, then the
+// model card in words with its units (model_card_lines), written atomically.
 void write_labelled_history(const CystometryResult& result, const std::filesystem::path& csv);
 
 }  // namespace vesica::simulate

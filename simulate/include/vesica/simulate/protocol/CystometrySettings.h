@@ -100,6 +100,9 @@ struct Level2Options {
   double void_dt_min_s = 0.01, void_dt_max_s = 0.5;
   double urine_viscosity = 1e-3;  // Pa·s
   Level2LinearSolver linear_solver = Level2LinearSolver::Krylov;
+  // The urine's tetrahedra are rebuilt once their smallest radius ratio falls below this
+  // (tetrahedra built below it already: once they have lost half their quality).
+  double remesh_radius_ratio = 0.1;
   // The coupled wall–urine Newton (increment tests, 40 iterations, no line search).
   NewtonOptions newton = coupled_newton_options();
 };

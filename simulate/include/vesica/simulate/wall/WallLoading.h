@@ -11,21 +11,6 @@
 
 namespace vesica::simulate {
 
-enum class Posture { Supine, Sitting };
-enum class ReferenceState { Scale, Prestress };
-
-// How the imaged surface becomes the stress-free reference wall.
-struct WallOptions {
-  double thickness_mm = 3.0;  // where the mesh gives no thickness_mm
-  ReferenceState reference = ReferenceState::Scale;
-  double residual_ml = 20.0;  // Scale: stress-free volume, below the start of filling
-  // Scale: stress-free volume as a fraction of the mesh's own, replacing residual_ml when
-  // > 0: a neobladder's tissue retracted from the pouch as built (docs/simulate.md).
-  double residual_fraction = 0.0;
-  double fixed_patch_radius_mm = 8.0;  // when the mesh has no outlet/inlet/fixed region
-  Posture posture = Posture::Supine;   // decides "down" for the fallback fixed patch
-};
-
 // Gravity vector in LPS patient coordinates (m/s²): supine = towards posterior (+y),
 // sitting = towards inferior (-z).
 Eigen::Vector3d gravity_lps(Posture posture);

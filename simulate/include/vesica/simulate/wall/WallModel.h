@@ -9,6 +9,21 @@
 
 namespace vesica::simulate {
 
+enum class Posture { Supine, Sitting };
+enum class ReferenceState { Scale, Prestress };
+
+// How the imaged surface becomes the stress-free reference wall (load_wall, WallLoading.h).
+struct WallOptions {
+  double thickness_mm = 3.0;  // where the mesh gives no thickness_mm
+  ReferenceState reference = ReferenceState::Scale;
+  double residual_ml = 20.0;  // Scale: stress-free volume, below the start of filling
+  // Scale: stress-free volume as a fraction of the mesh's own, replacing residual_ml when
+  // > 0: a neobladder's tissue retracted from the pouch as built (docs/simulate.md).
+  double residual_fraction = 0.0;
+  double fixed_patch_radius_mm = 8.0;  // when the mesh has no outlet/inlet/fixed region
+  Posture posture = Posture::Supine;   // decides "down" for the fallback fixed patch
+};
+
 struct WallModel {
   std::vector<Eigen::Vector3d> nodes;                  // reference positions (m)
   std::vector<std::array<int, 3>> triangles;           // outward-oriented
@@ -19,6 +34,10 @@ struct WallModel {
   // caller). Derived from the regions by fix_regions().
   std::vector<std::array<bool, 3>> fixed;
   std::vector<bool> support;  // node belongs to the elastic support region
+  // Where the wall came from (load_wall): the mesh file as given, its content hash and the
+  // options it was made the reference with. A wall built in memory has no file.
+  std::string source_file, source_hash;
+  WallOptions options;
 
   std::size_t node_count() const { return nodes.size(); }
   std::size_t triangle_count() const { return triangles.size(); }

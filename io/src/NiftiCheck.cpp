@@ -11,8 +11,9 @@
 #include <nifti1_io.h>
 
 #include "vesica/core/Error.h"
+#include "vesica/io/VolumeHeaderCheck.h"
 
-namespace vesica::segment {
+namespace vesica::io::detail {
 namespace {
 
 constexpr double kMinDeterminant = 1e-12;  // of the sform's 3x3 part, mm^3
@@ -113,6 +114,7 @@ void check_nifti_file(const std::filesystem::path& file) {
            "extract one volume first");
     voxels *= static_cast<std::uint64_t>(h.dim[i]);
   }
+  require_voxel_budget(name, voxels);
   if (h.bitpix <= 0 || h.bitpix % 8 != 0) fail(name, "bits per voxel is not a whole byte count");
   check_geometry(h, name);
   if (!finite({h.scl_slope, h.scl_inter})) fail(name, "intensity scaling is not finite");
@@ -131,4 +133,4 @@ void check_nifti_file(const std::filesystem::path& file) {
          "the volume is corrupt; export it again");
 }
 
-}  // namespace vesica::segment
+}  // namespace vesica::io::detail
