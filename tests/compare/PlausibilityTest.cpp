@@ -5,6 +5,8 @@
 // dropped. The recording as measured passes every rule.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>

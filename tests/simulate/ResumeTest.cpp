@@ -29,6 +29,7 @@
 #include "ShellCommand.h"
 #include "TestData.h"
 #include "fluid/TetQuality.h"
+#include "vesica/io/HistoryCsv.h"
 #include "vesica/simulate/fluid/FluidMesh.h"
 #include "vesica/simulate/protocol/CheckpointFile.h"
 #include "vesica/simulate/protocol/Cystometry.h"
@@ -240,9 +241,10 @@ TEST(Resume, AStopInTheMiddleOfAStepCheckpointsTheLastCompletedStep) {
   // The checkpoint's time is a row of the uninterrupted history: a completed step.
   const auto identity = vesica::simulate::read_checkpoint(cli.checkpoint("resumed")).identity;
   const double t = identity["time_s"].get<double>();
-  const auto whole = read_history(cli.dir / "whole" / "history.csv");
+  const std::vector<HistoryRow> whole =
+      vesica::io::history_rows(vesica::io::read_history_csv(cli.dir / "whole" / "history.csv"));
   EXPECT_TRUE(std::any_of(whole.begin(), whole.end(),
-                          [&](const HistoryCsvRow& r) { return same(r.t, t); }))
+                          [&](const HistoryRow& r) { return same(r.time_s, t); }))
       << "t = " << t;
   const CommandResult resumed = cli.simulate("resumed", "--resume");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
