@@ -103,7 +103,7 @@ TEST(HostileWorkdir, AFebioExportOutsideTheWorkdirIsRefusedAndOneInsideSurvivesR
   const fs::path dir = fresh_dir("hostile-export-feb");
   const std::string simulate =
       "  simulate: {input: s.msh, output: sim, params: {capacity_ml: 120, no_void: true, "
-      "no_series: true, export_feb: ";
+      "no_series: true, febio_approximate: true, export_feb: ";  // the file matters, not the law
   write_file(dir / "outside.yaml",
              "workdir: out\nstages:\n"
              "  mesh: {input: s.ply, output: s.msh}\n" +
