@@ -35,6 +35,9 @@ CMAKE_ARGS ?=
 # ccache may trust a header's contents rather than its time stamps (its manual,
 # "Sloppiness"): a fresh clone has every file new.
 export CCACHE_SLOPPINESS ?= pch_defines,time_macros,include_file_mtime,include_file_ctime
+# Paths inside the checkout hashed relative to it, so that a second checkout (a git worktree,
+# a fresh clone) compiles from the cache what the first one compiled.
+export CCACHE_BASEDIR ?= $(CURDIR)
 
 .PHONY: all deps configure build build-tests demo check test bench install package format clean
 
