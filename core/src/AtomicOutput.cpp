@@ -48,13 +48,6 @@ void check_not_empty(const fs::path& tmp, const fs::path& target) {
     fail(target.string(), "the writer produced an empty folder");
 }
 
-void injected_fault(const fs::path& target) {
-  const char* pattern = std::getenv("VESICA_FAIL_WRITE");
-  if (pattern && *pattern && target.filename().string().find(pattern) != std::string::npos)
-    fail(target.string(),
-         "could not be written: no space left on device (simulated by VESICA_FAIL_WRITE)");
-}
-
 bool process_gone(const std::string& pid_text) {
   const long pid = std::strtol(pid_text.c_str(), nullptr, 10);
   return pid > 0 && pid < 1L << 30 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
@@ -123,7 +116,6 @@ void write_checked(const fs::path& target_given, const std::function<void(const 
     if (folder) write_folder_marker(tmp);
     fsync_tree(tmp, target);
     detail::check_written(tmp, target);
-    injected_fault(target);
     require_replaceable(target, folder ? OutputKind::Folder : OutputKind::File);
     if (staging() && !detail::inside_temporary(target.parent_path()))
       stage_output(tmp, target);

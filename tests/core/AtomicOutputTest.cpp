@@ -91,13 +91,15 @@ TEST(AtomicOutput, AFullDiskFailsTheWriteAndKeepsTheEarlierFile) {
   EXPECT_EQ(files, 1);
 }
 
-TEST(AtomicOutput, TheFaultSwitchFailsTheNamedOutputOnly) {
+// tests/support/FailRename.c, linked into this binary, refuses the rename of the named
+// output as a full disk would.
+TEST(AtomicOutput, AFullDiskAtTheRenameFailsThatOutputOnly) {
   const fs::path dir = vesica::test::scratch_dir("atomic-fault");
   vesica::write_text_atomically(dir / "index.html", "earlier page");
-  ::setenv("VESICA_FAIL_WRITE", "index.html", 1);
+  ::setenv("VESICA_TEST_FAIL_RENAME", "index.html", 1);
   EXPECT_THROW(vesica::write_text_atomically(dir / "index.html", "new page"), vesica::Error);
   vesica::write_text_atomically(dir / "metrics.json", "{}");
-  ::unsetenv("VESICA_FAIL_WRITE");
+  ::unsetenv("VESICA_TEST_FAIL_RENAME");
   EXPECT_EQ(file_text(dir / "index.html"), "earlier page");
   EXPECT_EQ(file_text(dir / "metrics.json"), "{}");
 }

@@ -36,6 +36,26 @@ TEST(StagedOutputs, AStageFailingAtItsLastOutputLeavesEveryEarlierOutputAsItWas)
   EXPECT_EQ(entries(dir), 2);  // no temporary left
 }
 
+// A full disk at the commit's second rename (tests/support/FailRename.c, linked into this
+// binary): the first output, already renamed into place, goes back to its earlier content,
+// and a new output that had no earlier file is not left behind alone.
+TEST(StagedOutputs, ARenameRefusedDuringTheCommitPutsBackTheOutputsAlreadyReplaced) {
+  const fs::path dir = vesica::test::scratch_dir("staged-commit-fails");
+  vesica::write_text_atomically(dir / "bladder.stl", "old surface");
+  vesica::write_text_atomically(dir / "bladder.stl.regions.json", "old regions");
+  vesica::begin_staging();
+  vesica::write_text_atomically(dir / "new.txt", "made by this run");
+  vesica::write_text_atomically(dir / "bladder.stl", "new surface");
+  vesica::write_text_atomically(dir / "bladder.stl.regions.json", "new regions");
+  ::setenv("VESICA_TEST_FAIL_RENAME", "regions.json", 1);
+  EXPECT_THROW(vesica::commit_staged_outputs(), vesica::Error);
+  ::unsetenv("VESICA_TEST_FAIL_RENAME");
+  EXPECT_EQ(file_text(dir / "bladder.stl"), "old surface");
+  EXPECT_EQ(file_text(dir / "bladder.stl.regions.json"), "old regions");
+  EXPECT_FALSE(fs::exists(dir / "new.txt"));
+  EXPECT_EQ(entries(dir), 2);  // no temporary, no second name left
+}
+
 TEST(StagedOutputs, ASuccessfulStageReplacesAllItsOutputsAndItsManifestNamesTheirContent) {
   const fs::path dir = vesica::test::scratch_dir("staged-commit");
   vesica::write_text_atomically(dir / "bladder.msh", "old mesh");

@@ -34,6 +34,12 @@ std::map<std::string, std::string> hashes(const fs::path& dir) {
   return h;
 }
 
+// The environment that makes the rename of an output named like `name` fail as on a full
+// disk (tests/support/FailRename.c preloaded into the stage executable).
+std::string fail_rename(const std::string& name) {
+  return "LD_PRELOAD='" VESICA_FAIL_RENAME_LIBRARY "' VESICA_TEST_FAIL_RENAME=" + name + " ";
+}
+
 int temporaries(const fs::path& dir) {
   int n = 0;
   for (const auto& e : fs::recursive_directory_iterator(dir))
@@ -124,7 +130,7 @@ TEST_F(DataSafety, AFullDiskLeavesEveryStagesEarlierOutputsAsTheyWere) {
 
 TEST_F(DataSafety, AReportThatCannotBeWrittenKeepsTheEarlierPageAndMetricsTogether) {
   // The page fails after the metrics were written: neither may change.
-  const auto r = run_command("cd '" + dir_.string() + "' && VESICA_FAIL_WRITE=index.html " +
+  const auto r = run_command("cd '" + dir_.string() + "' && " + fail_rename("index.html") +
                              tool("vesica-compare") +
                              " --simulated sim/history.csv -o report --report compare.json");
   expect_nothing_lost(r, "index.html");
@@ -135,7 +141,7 @@ TEST_F(DataSafety, ASurfaceWhoseSidecarCannotBeWrittenKeepsTheEarlierPair) {
                        " bladder.nii.gz -o bladder.stl --edge-mm 8");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   before_ = hashes(dir_);
-  r = run_command("cd '" + dir_.string() + "' && VESICA_FAIL_WRITE=regions.json " +
+  r = run_command("cd '" + dir_.string() + "' && " + fail_rename("regions.json") +
                   tool("vesica-surface") + " bladder.nii.gz -o bladder.stl --edge-mm 6");
   expect_nothing_lost(r, "bladder.stl.regions.json");
 }

@@ -38,7 +38,6 @@ NewtonReport NewtonLoop::solve(NewtonSystem& system) {
   const bool tests_residual = system.tests_residual();
   for (int it = 0;; ++it) {
     report.iterations = it;
-    count_iteration();
     if (stop_requested()) {  // a stop within one iteration, not at the end of the step
       report.failure = "stopped by a signal";
       return report;

@@ -15,9 +15,4 @@ inline bool stop_requested() {
   return stop_signal() != 0;
 }
 
-// Called once per Newton iteration. Fault injection, for tests of a stop in the middle of
-// a step: when VESICA_SIMULATE_STOP_AFTER_ITERATIONS is K, the process sends itself SIGTERM
-// at its K-th iteration, through the real signal path.
-void count_iteration();
-
 }  // namespace vesica::simulate

@@ -8,9 +8,8 @@
 // ignores SIGXFSZ (run_stage_main does), so that a file-size limit shows up as a write
 // error instead of killing it silently.
 //
-// Fault injection, for tests of what a failed write leaves behind: when the environment
-// variable VESICA_FAIL_WRITE is set, an output whose file name contains its value fails
-// as a full disk would, after its writer ran and before it is renamed into place.
+// The tests of what a failed write leaves behind make the rename fail from outside the
+// product (tests/support/FailRename.c); the product has no fault switch of its own.
 #include <cstdint>
 #include <filesystem>
 #include <functional>

@@ -4,7 +4,9 @@
 // checks each output under its temporary name but does not rename it; commit() then
 // renames them all in the order written, discard() removes them. So a stage that fails
 // at its second output, its summary or its manifest leaves every earlier output as it
-// was, and no manifest certifies a mixture.
+// was, and no manifest certifies a mixture. A rename refused during the commit itself (a
+// full disk) puts the files it had already replaced back (their earlier content is kept
+// under a second name until the commit ends).
 //
 // Outputs inside a staged folder (a series' frames) are written in place in that
 // temporary folder. Staging is process-wide; without it write_atomically renames at once
