@@ -2,7 +2,9 @@
 // notebooks. Files are read through vesica_io, the wall is loaded and a cystometry run
 // exactly as vesica-simulate does (the same parameter table turns the protocol dict into
 // settings), and results come back as numpy arrays and dicts: the history as columns
-// (units in the keys), the summary as summary.json has it. Runs release the GIL.
+// (units in the keys), the summary as summary.json has it. Readers and runs release the
+// GIL; runs (cystometry, calibration) in one process take turns, since the sparse solvers'
+// Fortran runtime (MUMPS) is not re-entrant: parallel runs belong in separate processes.
 // Units: as the files and tables say (mm, ml, cmH2O, kPa at the edges). Arguments are taken
 // by value: a dict is read once and never kept or changed, a default is None (never a
 // shared dict), and a bad key is a ValueError of its own call.
@@ -11,6 +13,7 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -42,6 +45,21 @@ namespace py = pybind11;
 using namespace vesica;
 
 namespace {
+
+// Held by every call that solves (after the GIL is released, so that a thread waiting here
+// never holds the GIL another needs): one run at a time in the process.
+std::mutex& solver_turn() {
+  static std::mutex m;
+  return m;
+}
+
+// `read` without the GIL: the other Python threads run while a file is read. Nothing it
+// calls touches Python.
+template <typename Read>
+auto without_gil(Read&& read) {
+  py::gil_scoped_release release;
+  return read();
+}
 
 py::object from_json(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
@@ -160,7 +178,7 @@ py::dict history_columns(const std::vector<io::HistoryRow>& rows) {
 }
 
 py::dict read_label_map(const std::string& path) {
-  const io::LabelMap m = io::read_label_map(path);
+  const io::LabelMap m = without_gil([&] { return io::read_label_map(path); });
   py::array_t<std::uint8_t> voxels({m.size[2], m.size[1], m.size[0]});  // [k][j][i]
   std::copy(m.voxels.begin(), m.voxels.end(), voxels.mutable_data());
   py::dict d;
@@ -172,7 +190,7 @@ py::dict read_label_map(const std::string& path) {
 }
 
 py::dict read_surface(const std::string& path) {
-  const io::SurfaceFile f = io::read_surface_file(path);
+  const io::SurfaceFile f = without_gil([&] { return io::read_surface_file(path); });
   py::dict d;
   d["points_mm"] = to_numpy(f.surface.points_mm);
   d["triangles"] = to_numpy(f.surface.triangles);
@@ -182,7 +200,8 @@ py::dict read_surface(const std::string& path) {
 
 py::dict read_mesh(const std::string& path) {
   const bool msh = std::filesystem::path(path).extension() == ".msh";
-  const io::VolumeMesh m = msh ? io::read_msh(path).mesh : io::read_mesh_vtu(path);
+  const io::VolumeMesh m =
+      without_gil([&] { return msh ? io::read_msh(path).mesh : io::read_mesh_vtu(path); });
   py::dict d;
   d["nodes_mm"] = to_numpy(m.nodes);
   d["triangles"] = to_numpy(m.triangles);
@@ -234,6 +253,7 @@ py::dict run_cystometry(const Wall& wall, const py::object& material, const py::
   simulate::CystometryResult r;
   {
     py::gil_scoped_release release;  // minutes of C++: other Python threads may run
+    const std::lock_guard<std::mutex> turn(solver_turn());
     r = simulate::run_cystometry(wall.model, run.material, run.settings.protocol, run.settings.run);
   }
   py::dict d;
@@ -304,7 +324,7 @@ py::dict recording_columns(const io::Recording& r) {
 }
 
 py::dict ics_parameters(const std::string& path) {
-  const io::Recording r = io::read_recording(path);
+  const io::Recording r = without_gil([&] { return io::read_recording(path); });
   const compare::IcsParameters p = compare::compute_ics(r, compare::find_artefacts(r));
   return from_json(compare::to_json(p));
 }
@@ -324,6 +344,7 @@ py::object calibrate(const std::string& mesh, const std::string& measured,
   compare::CalibrationResult result;
   {
     py::gil_scoped_release release;  // many simulations: other Python threads may run
+    const std::lock_guard<std::mutex> turn(solver_turn());
     result = compare::calibrate_from_options(o, recording, comparison);
   }
   return from_json(compare::to_json(result));
@@ -334,6 +355,11 @@ py::object calibrate(const std::string& mesh, const std::string& measured,
 PYBIND11_MODULE(vesica, m) {
   m.doc() = "vesica: the bladder from CT/MRI to simulated cystometry (docs/python.md in README)";
   py::register_exception<Error>(m, "Error", PyExc_RuntimeError);
+  // numpy's C API is looked up once, in a function-local static, by the first array made.
+  // Made lazily, by two threads' first read_surface, the first thread imports numpy inside
+  // that static's initialisation (and lets the GIL go during the import) while the second
+  // waits for the static holding the GIL: a deadlock. Looked up here, at import, instead.
+  (void)py::array_t<double>(0);
   py::class_<Wall>(m, "Wall")
       .def_property_readonly("nodes_m",
                              [](const Wall& w) {
@@ -369,7 +395,9 @@ PYBIND11_MODULE(vesica, m) {
         "Every physical parameter: name, key, units, SI factor, defaults per material, range");
   m.def(
       "read_recording",
-      [](const std::string& path) { return recording_columns(io::read_recording(path)); },
+      [](const std::string& path) {
+        return recording_columns(without_gil([&] { return io::read_recording(path); }));
+      },
       py::arg("path"), "A urodynamic recording (CSV) as columns");
   m.def("calibrate", &calibrate, py::arg("mesh"), py::arg("measured"), py::arg("parameters"),
         py::arg("options") = py::none(),

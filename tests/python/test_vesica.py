@@ -203,3 +203,55 @@ def test_python_calibration_equals_the_command_line(sphere, tmp_path):
     assert {"rmse", "constant_baseline_rmse", "line_baseline_rmse"} <= set(filling)
     with pytest.raises(ValueError, match="max_simulation"):
         vesica.calibrate(wall, recording, "mu", {"max_simulation": 8})
+
+
+def run_python(script, timeout_s):
+    """`script` in a fresh interpreter (the module's first use is its own), with a limit:
+    a deadlock or an abort is this test's failure, not the session's."""
+    try:
+        result = subprocess.run(["/usr/bin/python3", "-c", script], capture_output=True,
+                                text=True, timeout=timeout_s, env=dict(os.environ))
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"no answer within {timeout_s} s (a deadlock)")
+    assert result.returncode == 0, result.stdout + result.stderr
+    return result.stdout
+
+
+def test_two_threads_first_reads_finish(sphere):
+    # Issue 37: the first array either thread made looked numpy up in a static; the two
+    # first read_surface calls then waited for each other forever.
+    out = run_python(f"""
+import threading, vesica
+results = []
+def read():
+    results.append(len(vesica.read_surface({str(sphere)!r})["triangles"]))
+threads = [threading.Thread(target=read, daemon=True) for _ in range(4)]
+for t in threads: t.start()
+for t in threads: t.join(60)
+print(sorted(results))
+""", 120)
+    triangles = len(vesica.read_surface(str(sphere))["triangles"])
+    assert out.strip() == str([triangles] * 4)
+
+
+def test_concurrent_cystometries_on_one_wall_equal_a_serial_one(sphere):
+    # Issue 37: two threads' runs on one wall aborted in the solvers' Fortran runtime. They
+    # now take turns: each thread's Pdet is the serial run's, value for value.
+    serial = vesica.run_cystometry(vesica.load_wall(str(sphere)), MATERIAL, PROTOCOL)
+    out = run_python(f"""
+import json, threading, vesica
+wall = vesica.load_wall({str(sphere)!r})
+results = {{}}
+def run(i):
+    r = vesica.run_cystometry(wall, {MATERIAL!r}, {PROTOCOL!r})
+    results[i] = [r["completed"], list(r["history"]["pdet_cmh2o"])]
+threads = [threading.Thread(target=run, args=(i,), daemon=True) for i in range(3)]
+for t in threads: t.start()
+for t in threads: t.join(300)
+print(json.dumps(results))
+""", 400)
+    results = json.loads(out)
+    assert len(results) == 3
+    for completed, pdet in results.values():
+        assert completed
+        np.testing.assert_array_equal(np.array(pdet), serial["history"]["pdet_cmh2o"])
