@@ -3,6 +3,8 @@
 #include <vtkAppendFilter.h>
 #include <vtkCellData.h>
 #include <vtkCleanPolyData.h>
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkPointData.h>
 #include <vtkDiscreteFlyingEdges3D.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -55,6 +57,43 @@ double write_stress_sphere(const std::filesystem::path& vtu) {
   writer->SetInputData(grid->GetOutput());
   writer->Write();
   return largest;
+}
+
+void write_fluid_box(const std::filesystem::path& vtu, double k_per_s) {
+  vtkNew<vtkImageData> box;
+  box->SetDimensions(5, 5, 5);
+  box->SetSpacing(5, 5, 5);
+  box->SetOrigin(-10, -10, -10);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(box);
+  tets->Update();
+  vtkUnstructuredGrid* grid = tets->GetOutput();
+  vtkNew<vtkDoubleArray> u;
+  u->SetName("velocity_mm_s");
+  u->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    double x[3];
+    grid->GetPoint(i, x);
+    u->InsertNextTuple3(0.0, 0.0, k_per_s * x[2]);
+  }
+  grid->GetPointData()->AddArray(u);
+  for (const auto& [name, value] : {std::pair<const char*, std::array<double, 3>>{
+                                        "outlet_centroid_mm", {0.3, 0.0, 0.0}},
+                                    {"outlet_axis", {0.0, 0.0, 1.0}}}) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfComponents(3);
+    a->InsertNextTuple(value.data());
+    grid->GetFieldData()->AddArray(a);
+  }
+  vtkNew<vtkDoubleArray> unit;  // mm, as every vesica .vtu says
+  unit->SetName("length_unit_m");
+  unit->InsertNextValue(0.001);
+  grid->GetFieldData()->AddArray(unit);
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetFileName(vtu.c_str());
+  writer->SetInputData(grid);
+  writer->Write();
 }
 
 long write_label_surface(const std::filesystem::path& nifti, const std::filesystem::path& vtp,

@@ -35,6 +35,12 @@ inline std::string compare_exe() {
 // the lowest triangles. Returns the largest σ1 of the wall (non-outlet) triangles.
 double write_stress_sphere(const std::filesystem::path& vtu);
 
+// A level-2 fluid frame (.vtu) on the box [-10, 10]^3 mm of tetrahedra (a 5 mm grid, each
+// cube split into tets), with the velocity u = (0, 0, k z) mm/s on its nodes (k in 1/s)
+// and the outlet's field data: centroid (0.3, 0, 0) mm, axis +z (length_unit_m 0.001). The plane through that
+// axis nearest sagittal is x = 0.3 mm; on it |u| = k |z| exactly (u is linear, as P1).
+void write_fluid_box(const std::filesystem::path& vtu, double k_per_s);
+
 // The closed surface of a label map (label 1) as a .vtp in mm with field data units = mm:
 // discrete flying edges, windowed-sinc smoothing, quadric decimation to about
 // `target_triangles`, consistently outward normals. Returns the triangle count.

@@ -193,3 +193,51 @@ TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
   ASSERT_EQ(s.exit_code, 0) << s.output;
   EXPECT_GT(ink_of(shot).colours, 8);
 }
+
+// A level-2 run's frames: the wall, and the urine on its fluid mesh, whose velocity grows
+// with the voiding (u = (0, 0, k z), k up to 200/s: 2 m/s on the section's top and bottom).
+// Choosing the urine's speed draws its section inside a faint wall, on a colour bar from 0
+// to that largest speed.
+TEST(ReportBrowser, ALevelTwoRunShowsTheUrineSpeedInsideTheWall) {
+  if (run_command("command -v chromium").exit_code != 0) {
+    if (running_in_ci()) FAIL() << "chromium is not installed";
+    GTEST_SKIP() << "chromium is not installed";
+  }
+  const fs::path dir = scratch_dir("compare-browser-urine");
+  fs::create_directories(dir / "sim/series");
+  fs::create_directories(dir / "sim/fluid");
+  std::vector<std::pair<double, std::string>> steps, fluid;
+  const double times[] = {0, 100, 200, 360, 390}, k[] = {0, 0, 0, 50, 200};
+  for (int i = 0; i < 5; ++i) {
+    const std::string n = std::to_string(i);
+    write_stress_sphere(dir / "sim/series" / ("step_000" + n + ".vtu"));
+    write_fluid_box(dir / "sim/fluid" / ("fluid_000" + n + ".vtu"), k[i]);
+    steps.emplace_back(times[i], "series/step_000" + n + ".vtu");
+    fluid.emplace_back(times[i], "fluid/fluid_000" + n + ".vtu");
+  }
+  std::ofstream(dir / "sim/series.pvd") << vesica::io::pvd_text(steps);
+  std::ofstream(dir / "sim/fluid.pvd") << vesica::io::pvd_text(fluid);
+  fs::copy_file(compare_data("synthetic-history.csv"), dir / "sim/history.csv");
+  const auto run = run_command(compare_exe() + " --simulated " +
+                               (dir / "sim/history.csv").string() + " -o " +
+                               (dir / "report").string() + " --no-pdf");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const fs::path page = dir / "report" / "index.html";
+  const std::string html = read_text(page);
+  ASSERT_NE(html.find("<option value=\"speed\">"), std::string::npos) << "no urine speed to choose";
+  fs::copy_file(page, artefact_dir("report") / "index-urine.html",
+                fs::copy_options::overwrite_existing);
+
+  const auto dom = run_command(chromium(dir / "profile") + kSoftwareWebGl +
+                               " --window-size=1280,900 --dump-dom 'file://" + page.string() +
+                               "#check-urine'");
+  ASSERT_EQ(dom.exit_code, 0) << dom.output;
+  EXPECT_NE(dom.output.find("<pre id=\"js-errors\" hidden=\"\"></pre>"), std::string::npos);
+  EXPECT_EQ(body_data(dom.output, "wall3d-urine-frames"), "5");
+  const std::string ink = body_data(dom.output, "wall3d-urine-ink");
+  ASSERT_FALSE(ink.empty()) << dom.output.substr(0, 3000);
+  EXPECT_GT(std::stod(ink), 0.01) << "the urine's section is not drawn";
+  EXPECT_EQ(body_data(dom.output, "wall3d-urine-bar").rfind("urine speed |u| (m/s) 0 to 2.00 ", 0),
+            0u)
+      << body_data(dom.output, "wall3d-urine-bar");
+}

@@ -6,21 +6,11 @@
 #include <sstream>
 #include <vector>
 
-#include <vtkCellArray.h>
-#include <vtkCutter.h>
-#include <vtkDataArray.h>
-#include <vtkFieldData.h>
-#include <vtkNew.h>
-#include <vtkPlane.h>
-#include <vtkPointData.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
 #include <Eigen/Dense>
 
 #include "vesica/compare/analysis/WallStress.h"
 #include "vesica/compare/html/Viridis.h"
+#include "vesica/compare/report/UrineSection.h"
 #include "vesica/core/Error.h"
 
 namespace vesica::compare {
@@ -32,54 +22,6 @@ namespace fs = std::filesystem;
 constexpr double kWidth = 640, kHeight = 480;
 constexpr double kLeft = 64, kTop = 28, kPlotW = 440, kPlotH = 400;
 constexpr double kBarX = 560, kBarW = 18;
-
-Eigen::Vector3d field_vector(vtkUnstructuredGrid* grid, const char* name, const fs::path& vtu) {
-  vtkDataArray* a = grid->GetFieldData()->GetArray(name);
-  if (!a || a->GetNumberOfComponents() != 3 || a->GetNumberOfTuples() < 1)
-    fail(vtu.string(), std::string("has no field data ") + name + " (not a level-2 fluid frame)");
-  Eigen::Vector3d v;
-  for (int c = 0; c < 3; ++c) v[c] = a->GetComponent(0, c);
-  if (!v.allFinite()) fail(vtu.string(), std::string(name) + " is not finite");
-  return v;
-}
-
-// The plane's in-picture axes: `along` the outlet axis (drawn downwards, as the urethra
-// leaves the bladder at its bottom) and `across` it, in the plane that contains the axis
-// and is as close to sagittal (normal ⟂ to LPS x) as the axis allows.
-struct CutFrame {
-  Eigen::Vector3d origin, along, across, normal;
-};
-
-CutFrame cut_frame(vtkUnstructuredGrid* grid, const fs::path& vtu) {
-  CutFrame f;
-  f.origin = field_vector(grid, "outlet_centroid_mm", vtu);
-  f.along = field_vector(grid, "outlet_axis", vtu).normalized();
-  Eigen::Vector3d n = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(f.along) * f.along;
-  if (n.norm() < 1e-3)
-    n = Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitY().dot(f.along) * f.along;
-  f.normal = n.normalized();
-  f.across = f.normal.cross(f.along);
-  return f;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> read_frame(const fs::path& vtu) {
-  if (!fs::exists(vtu)) fail(vtu.string(), "not found");
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(vtu.c_str());
-  reader->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
-  if (!grid || grid->GetNumberOfCells() == 0) fail(vtu.string(), "has no tetrahedra");
-  vtkDataArray* u = grid->GetPointData()->GetArray("velocity_mm_s");
-  if (!u || u->GetNumberOfComponents() != 3 || u->GetNumberOfTuples() != grid->GetNumberOfPoints())
-    fail(vtu.string(), "has no velocity_mm_s on every node");
-  return grid;
-}
-
-double speed_m_s(vtkDataArray* u_mm_s, vtkIdType i) {
-  double u[3];
-  u_mm_s->GetTuple(i, u);
-  return 1e-3 * std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-}
 
 // v with `digits` significant digits.
 std::string significant(double v, int digits) {
@@ -121,37 +63,18 @@ void draw_colour_bar(std::ostringstream& o, double max_speed) {
 }  // namespace
 
 FluidJetPicture fluid_jet_picture(const fs::path& vtu) {
-  const vtkSmartPointer<vtkUnstructuredGrid> grid = read_frame(vtu);
-  const CutFrame frame = cut_frame(grid, vtu);
-  vtkDataArray* u = grid->GetPointData()->GetArray("velocity_mm_s");
+  const UrineSection cut = urine_section(vtu);
   FluidJetPicture pic;
   pic.frame = vtu.filename().string();
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-    pic.max_speed_m_s = std::max(pic.max_speed_m_s, speed_m_s(u, i));
-  if (!std::isfinite(pic.max_speed_m_s)) fail(vtu.string(), "velocity_mm_s is not finite");
-
-  vtkNew<vtkPlane> plane;
-  plane->SetOrigin(frame.origin.data());
-  plane->SetNormal(frame.normal.data());
-  vtkNew<vtkCutter> cutter;
-  cutter->SetInputData(grid);
-  cutter->SetCutFunction(plane);
-  cutter->GenerateTrianglesOff();  // the tets' own sections (triangles and quads)
-  cutter->Update();
-  vtkPolyData* cut = cutter->GetOutput();
-  vtkDataArray* cu = cut->GetPointData()->GetArray("velocity_mm_s");
-  if (!cu || cut->GetNumberOfCells() == 0)
-    fail(vtu.string(), "the plane through the outlet axis cuts no tetrahedron");
+  pic.max_speed_m_s = cut.max_speed_m_s;
 
   // In-plane coordinates (mm from the outlet centroid): a = along the axis, c = across.
-  std::vector<Eigen::Vector2d> p(static_cast<std::size_t>(cut->GetNumberOfPoints()));
+  std::vector<Eigen::Vector2d> p;
   Eigen::AlignedBox2d box;
-  for (vtkIdType i = 0; i < cut->GetNumberOfPoints(); ++i) {
-    double x[3];
-    cut->GetPoint(i, x);
-    const Eigen::Vector3d d = Eigen::Vector3d(x[0], x[1], x[2]) - frame.origin;
-    p[static_cast<std::size_t>(i)] = {d.dot(frame.across), d.dot(frame.along)};
-    box.extend(p[static_cast<std::size_t>(i)]);
+  for (const Eigen::Vector3d& x : cut.points_mm) {
+    const Eigen::Vector3d d = x - cut.origin;
+    p.emplace_back(d.dot(cut.across), d.dot(cut.along));
+    box.extend(p.back());
   }
   const double mm =
       std::min(kPlotW / std::max(box.sizes().x(), 1e-9), kPlotH / std::max(box.sizes().y(), 1e-9));
@@ -169,18 +92,15 @@ FluidJetPicture fluid_jet_picture(const fs::path& vtu) {
   draw_colour_bar(o, pic.max_speed_m_s);
   o << "<g stroke-width=\"0.3\">\n";
   const double top = pic.max_speed_m_s > 0.0 ? pic.max_speed_m_s : 1.0;
-  for (vtkIdType c = 0; c < cut->GetNumberOfCells(); ++c) {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    cut->GetCellPoints(c, n, ids);
-    if (n < 3) continue;
+  for (const std::vector<int>& polygon : cut.polygons) {
     double speed = 0.0;
-    for (vtkIdType k = 0; k < n; ++k) speed += speed_m_s(cu, ids[k]) / static_cast<double>(n);
+    for (int k : polygon)
+      speed += cut.speed_m_s[static_cast<std::size_t>(k)] / static_cast<double>(polygon.size());
     const std::string colour = viridis_hex(std::clamp(speed / top, 0.0, 1.0));
     o << "<polygon fill=\"" << colour << "\" stroke=\"" << colour << "\" points=\"";
-    for (vtkIdType k = 0; k < n; ++k) {
-      const Eigen::Vector2d& q = p[static_cast<std::size_t>(ids[k])];
-      o << sx(q.x()) << ',' << sy(q.y()) << (k + 1 < n ? " " : "");
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const Eigen::Vector2d& q = p[static_cast<std::size_t>(polygon[k])];
+      o << sx(q.x()) << ',' << sy(q.y()) << (k + 1 < polygon.size() ? " " : "");
     }
     o << "\"/>\n";
   }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "vesica/compare/analysis/WallStress.h"
+#include "vesica/compare/report/UrineSection.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Regions.h"
 #include "vesica/io/PvdSeries.h"
@@ -68,6 +70,27 @@ void robust_range(std::vector<float> values, double range[2]) {
   if (!(range[1] > range[0])) range[1] = range[0] + 1e-6 * std::max(1.0, std::abs(range[0]));
 }
 
+// The urine's section nearest the frame's time, its polygons split into triangles (a fan:
+// a tet's section is convex). A fluid frame that cannot be cut leaves the frame without one.
+void add_urine_section(WallViewerFrame& f, const std::filesystem::path& fluid_pvd,
+                       double normal[3]) {
+  UrineSection cut;
+  try {
+    const auto vtu = frame_at_time(fluid_pvd, f.time_s);
+    if (!vtu) return;
+    cut = urine_section(*vtu);
+  } catch (const Error&) {
+    return;
+  }
+  for (int k = 0; k < 3; ++k) normal[k] = cut.normal[k];
+  for (const Eigen::Vector3d& x : cut.points_mm)
+    for (int k = 0; k < 3; ++k) f.urine_points_mm.push_back(static_cast<float>(x[k]));
+  for (double v : cut.speed_m_s) f.urine_speed_m_s.push_back(static_cast<float>(v));
+  for (const std::vector<int>& polygon : cut.polygons)
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
+      f.urine_triangles.insert(f.urine_triangles.end(), {polygon[0], polygon[k], polygon[k + 1]});
+}
+
 }  // namespace
 
 std::optional<WallViewer> load_wall_viewer(const std::filesystem::path& pvd, double capacity_time_s,
@@ -101,6 +124,14 @@ std::optional<WallViewer> load_wall_viewer(const std::filesystem::path& pvd, dou
       all_stretch.insert(all_stretch.end(), v.frames.back().stretch.begin(),
                          v.frames.back().stretch.end());
     }
+    const std::filesystem::path fluid = pvd.parent_path() / "fluid.pvd";
+    if (std::filesystem::exists(fluid))
+      for (WallViewerFrame& f : v.frames) {
+        add_urine_section(f, fluid, v.urine_normal);
+        for (float speed : f.urine_speed_m_s)
+          v.urine_speed_max_m_s = std::max(v.urine_speed_max_m_s, double(speed));
+        v.has_urine = v.has_urine || !f.urine_triangles.empty();
+      }
     robust_range(std::move(all_sigma), v.sigma1_range_kpa);
     robust_range(std::move(all_stretch), v.stretch_range);
   } catch (const Error& e) {

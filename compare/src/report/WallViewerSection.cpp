@@ -36,7 +36,7 @@ std::string script_safe(std::string js) {
 
 nlohmann::json viewer_json(const WallViewer& v) {
   nlohmann::json frames = nlohmann::json::array();
-  for (const WallViewerFrame& f : v.frames)
+  for (const WallViewerFrame& f : v.frames) {
     frames.push_back({{"time_s", f.time_s},
                       {"axis_s", f.time_s - v.axis_start_s},
                       {"volume_ml", f.volume_ml},
@@ -44,17 +44,25 @@ nlohmann::json viewer_json(const WallViewer& v) {
                       {"points", packed(f.points_mm)},
                       {"sigma1", packed(f.sigma1_kpa)},
                       {"stretch", packed(f.stretch)}});
+    if (f.urine_triangles.empty()) continue;
+    frames.back()["urine_points"] = packed(f.urine_points_mm);
+    frames.back()["urine_triangles"] = packed(f.urine_triangles);
+    frames.back()["urine_speed"] = packed(f.urine_speed_m_s);
+  }
   nlohmann::json palette = nlohmann::json::array();
   for (int i = 0; i <= 64; ++i) {
     const auto rgb = viridis(i / 64.0);
     palette.push_back({rgb[0], rgb[1], rgb[2]});
   }
+  nlohmann::json ranges = {{"sigma1", {v.sigma1_range_kpa[0], v.sigma1_range_kpa[1]}},
+                           {"stretch", {v.stretch_range[0], v.stretch_range[1]}}};
+  if (v.has_urine)
+    ranges["speed"] = {0.0, v.urine_speed_max_m_s > 0.0 ? v.urine_speed_max_m_s : 1e-6};
   return {{"triangles", packed(v.triangles)},
+          {"urine_normal", {v.urine_normal[0], v.urine_normal[1], v.urine_normal[2]}},
           {"frames", frames},
           {"capacity_frame", v.capacity_frame},
-          {"ranges",
-           {{"sigma1", {v.sigma1_range_kpa[0], v.sigma1_range_kpa[1]}},
-            {"stretch", {v.stretch_range[0], v.stretch_range[1]}}}},
+          {"ranges", ranges},
           {"palette", palette},
           {"nan", {0.6, 0.6, 0.6}},
           {"below", {0.0, 0.0, 0.0}},
@@ -74,7 +82,10 @@ const char* kViewerScript = R"JS(
   var tri = floats(data.triangles, Int32Array), m = tri.length / 3;
   var frames = data.frames.map(function (f) {
     return {f: f, points: floats(f.points, Float32Array), sigma1: floats(f.sigma1, Float32Array),
-            stretch: floats(f.stretch, Float32Array)};
+            stretch: floats(f.stretch, Float32Array),
+            urine: f.urine_triangles ? {points: floats(f.urine_points, Float32Array),
+                                        index: new Uint32Array(floats(f.urine_triangles, Int32Array)),
+                                        speed: floats(f.urine_speed, Float32Array)} : null};
   });
   var canvas = document.getElementById('wall3d-canvas');
   var renderer = new THREE.WebGLRenderer({canvas: canvas, antialias: true, preserveDrawingBuffer: true});
@@ -89,6 +100,12 @@ const char* kViewerScript = R"JS(
   var wall = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial(
       {vertexColors: THREE.VertexColors || true, side: THREE.DoubleSide}));
   scene.add(wall);
+  // Level 2: the urine's section through the outlet axis, drawn inside a faint wall.
+  var urineGeometry = new THREE.BufferGeometry();
+  var urine = new THREE.Mesh(urineGeometry, new THREE.MeshBasicMaterial(
+      {vertexColors: THREE.VertexColors || true, side: THREE.DoubleSide}));
+  urine.visible = false;
+  scene.add(urine);
   var camera = new THREE.PerspectiveCamera(30, canvas.width / canvas.height, 1, 1e5);
   var controls = new THREE.OrbitControls(camera, canvas);
   controls.addEventListener('change', draw);
@@ -106,10 +123,39 @@ const char* kViewerScript = R"JS(
   var label = document.getElementById('wall3d-label'), bar = document.getElementById('wall3d-bar');
   function draw() { renderer.render(scene, camera); }
   function fixed(v, digits) { return typeof v === 'number' ? v.toFixed(digits) : '?'; }
+  var faint = [0.75, 0.75, 0.75];
+  function showUrine(fr, on) {
+    wall.material.transparent = on;
+    wall.material.opacity = on ? 0.15 : 1;
+    wall.material.depthWrite = !on;
+    wall.material.needsUpdate = true;
+    urine.visible = on && !!fr.urine;
+    if (!urine.visible) return;
+    var u = fr.urine, n = u.speed.length, c = new Float32Array(3 * n);
+    for (var i = 0; i < n; ++i) {
+      var rgb = colourOf(u.speed[i], data.ranges.speed);
+      for (var d = 0; d < 3; ++d) c[3 * i + d] = rgb[d];
+    }
+    urineGeometry.setAttribute('position', new THREE.BufferAttribute(u.points, 3));
+    urineGeometry.setAttribute('color', new THREE.BufferAttribute(c, 3));
+    urineGeometry.setIndex(new THREE.BufferAttribute(u.index, 1));
+    urineGeometry.computeBoundingSphere();
+  }
+  function barText(q, range, fr) {
+    if (q === 'speed')
+      return 'urine speed |u| (m/s) 0 to ' + range[1].toPrecision(3) +
+          ' on the plane through the outlet axis, the wall drawn faint' +
+          (fr.urine ? '' : ' (no fluid frame at this time)');
+    return (q === 'sigma1' ? 'sigma1 (kPa) ' : 'larger principal stretch ') +
+        range[0].toPrecision(3) + ' to ' + range[1].toPrecision(3) +
+        ' (2nd to 98th percentile; below black, above pink; outlet grey)';
+  }
   function show(i) {
-    var fr = frames[i], q = choice.value, range = data.ranges[q], values = fr[q];
+    var fr = frames[i], q = choice.value, range = data.ranges[q];
+    var values = q === 'speed' ? null : fr[q];
+    showUrine(fr, q === 'speed');
     for (var t = 0; t < m; ++t) {
-      var c = colourOf(values[t], range);
+      var c = values ? colourOf(values[t], range) : faint;
       for (var k = 0; k < 3; ++k) {
         var n = tri[3 * t + k];
         for (var d = 0; d < 3; ++d) {
@@ -125,9 +171,7 @@ const char* kViewerScript = R"JS(
     label.textContent = (i === data.capacity_frame ? 'nearest capacity: ' : '') + 't = ' +
         f.time_s.toFixed(0) + ' s, V = ' + fixed(f.volume_ml, 0) + ' ml, Pdet = ' +
         fixed(f.pdet_cmh2o, 1) + ' cmH2O';
-    bar.textContent = (q === 'sigma1' ? 'sigma1 (kPa) ' : 'larger principal stretch ') +
-        range[0].toPrecision(3) + ' to ' + range[1].toPrecision(3) +
-        ' (2nd to 98th percentile; below black, above pink; outlet grey)';
+    bar.textContent = barText(q, range, fr);
     moveCursor(f.axis_s);
     draw();
   }
@@ -153,7 +197,14 @@ const char* kViewerScript = R"JS(
   slider.max = frames.length - 1;
   slider.value = data.capacity_frame;
   slider.addEventListener('input', function () { show(+slider.value); });
-  choice.addEventListener('change', function () { show(+slider.value); });
+  // The urine's section is seen face on; the wall's quantities from the front again.
+  choice.addEventListener('change', function () {
+    var n = choice.value === 'speed' ? data.urine_normal : [0, 1, 0];
+    camera.position.set(centre.x - 2.6 * size * n[0], centre.y - 2.6 * size * n[1],
+                        centre.z - 2.6 * size * n[2]);
+    controls.update();
+    show(+slider.value);
+  });
   show(data.capacity_frame);
 
   // What a headless browser's DOM dump can check: how much of the canvas is drawn, and,
@@ -163,12 +214,31 @@ const char* kViewerScript = R"JS(
     document.body.dataset[prefix + 'Cursor'] = line ? line.getAttribute('x1') : '';
     document.body.dataset[prefix + 'Label'] = label.textContent;
   }
-  var gl = renderer.getContext(), w = canvas.width, h = canvas.height, px = new Uint8Array(4 * w * h);
-  gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
-  var inked = 0;
-  for (var j = 0; j < w * h; ++j) if (px[4 * j] + px[4 * j + 1] + px[4 * j + 2] < 720) ++inked;
-  document.body.dataset.wall3dInk = (inked / (w * h)).toFixed(3);
+  function ink() {
+    var gl = renderer.getContext(), w = canvas.width, h = canvas.height, px = new Uint8Array(4 * w * h);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    var inked = 0;
+    for (var j = 0; j < w * h; ++j) if (px[4 * j] + px[4 * j + 1] + px[4 * j + 2] < 720) ++inked;
+    return (inked / (w * h)).toFixed(3);
+  }
+  document.body.dataset.wall3dInk = ink();
   record('wall3dCapacity');
+  // The urine's section at its fastest frame: drawn (ink), and its colour bar's range.
+  if (data.ranges.speed && location.hash === '#check-urine') {
+    var fastest = 0, top = -1;
+    frames.forEach(function (fr, i) {
+      if (!fr.urine) return;
+      for (var k = 0; k < fr.urine.speed.length; ++k)
+        if (fr.urine.speed[k] > top) { top = fr.urine.speed[k]; fastest = i; }
+    });
+    document.body.dataset.wall3dUrineFrames = frames.filter(function (fr) { return fr.urine; }).length;
+    choice.value = 'speed';
+    choice.dispatchEvent(new Event('change'));
+    slider.value = fastest;
+    slider.dispatchEvent(new Event('input'));
+    document.body.dataset.wall3dUrineInk = ink();
+    document.body.dataset.wall3dUrineBar = bar.textContent;
+  }
   if (location.hash === '#check-slider') {
     slider.value = 0;
     slider.dispatchEvent(new Event('input'));
@@ -195,7 +265,10 @@ std::string wall_viewer_section(const WallViewer& v, const std::filesystem::path
        "style=\"width:640px;max-width:100%;height:480px;border:1px solid #ddd\"></canvas>\n"
     << "<div class=\"controls\"><label>colour <select id=\"wall3d-quantity\">"
        "<option value=\"sigma1\">&sigma;1, max principal Cauchy stress (kPa)</option>"
-       "<option value=\"stretch\">larger principal stretch</option></select></label> "
+       "<option value=\"stretch\">larger principal stretch</option>"
+    << (v.has_urine ? "<option value=\"speed\">urine speed through the outlet axis (m/s)</option>"
+                    : "")
+    << "</select></label> "
     << "<label>time <input id=\"wall3d-time\" type=\"range\" min=\"0\" step=\"1\" "
        "style=\"width:320px;max-width:100%\"></label>\n"
     << "<p id=\"wall3d-label\" class=\"small\"></p><p id=\"wall3d-bar\" class=\"small\"></p>"
@@ -203,7 +276,9 @@ std::string wall_viewer_section(const WallViewer& v, const std::filesystem::path
     << "<p class=\"note\">Drag to turn the wall, scroll to zoom; the slider runs over "
     << v.frames.size()
     << " frames of filling and voiding and moves the red cursor on the trace above. The "
-       "wall is drawn from the simulation's series (series.pvd) and opens with no network.</p>\n"
+       "wall is drawn from the simulation's series (series.pvd)"
+    << (v.has_urine ? ", the urine's section from its fluid series (fluid.pvd)" : "")
+    << " and opens with no network.</p>\n"
     << "<script type=\"application/json\" id=\"wall3d-data\">" << script_safe(viewer_json(v).dump())
     << "</script>\n"
     << "<script>" << script_safe(text_of(three)) << "</script>\n"

@@ -1,8 +1,7 @@
 #pragma once
 // The jet into the urethra, from a level-2 simulation's fluid series (fluid.pvd beside
 // history.csv; docs/navier-stokes.md §4): the urine speed |u| on the plane through the
-// outlet's axis (the frame's outlet_centroid_mm and outlet_axis), cut from the tetrahedra
-// with VTK (vtkCutter) at the time of Qmax, drawn as a self-contained SVG: each cut
+// outlet's axis (UrineSection.h) at the time of Qmax, drawn as a self-contained SVG: each cut
 // polygon filled on the viridis map by the mean speed of its corners, a colour bar from 0
 // to the frame's maximum speed (m/s), axes in mm from the outlet's centroid along and
 // across its axis. No rendering: the SVG is written directly.

@@ -9,6 +9,11 @@
 // Colours as in the static picture (WallStressPicture.h): viridis over a robust range, the
 // 2nd to 98th percentile of each quantity over the frames shown, the tails beyond it black
 // and pink; the outlet (held fixed) grey.
+//
+// A level-2 run (fluid.pvd beside series.pvd) adds a third quantity, the urine's speed:
+// its section on the plane through the outlet's axis (UrineSection.h) at each frame's time,
+// coloured from 0 to the largest speed on the sections shown, inside a faint wall, the view
+// turned to face the section.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -22,6 +27,10 @@ struct WallViewerFrame {
   std::vector<float> points_mm;   // 3 per node
   std::vector<float> sigma1_kpa;  // per triangle (NaN on the outlet)
   std::vector<float> stretch;     // per triangle, the larger principal stretch
+  // The urine's section at this time (level 2; empty otherwise): triangles of its points.
+  std::vector<float> urine_points_mm;  // 3 per point
+  std::vector<int> urine_triangles;    // 3 point indices per triangle
+  std::vector<float> urine_speed_m_s;  // per point
 };
 
 struct WallViewer {
@@ -30,13 +39,17 @@ struct WallViewer {
   std::size_t capacity_frame = 0;       // the frame nearest capacity
   double sigma1_range_kpa[2] = {0, 1};  // 2nd..98th percentile over the frames
   double stretch_range[2] = {1, 2};
+  bool has_urine = false;          // some frame carries a urine section
+  double urine_speed_max_m_s = 0;  // the largest speed on the sections shown
+  double urine_normal[3] = {1, 0, 0};  // of the section's plane: the view turns to face it
   double axis_start_s = 0;  // the trace's time axis is time_s - axis_start_s
   std::string message;      // why there is no view, or what it shows
 };
 
 // At most `max_frames` frames of the series, evenly spaced in its list, the one nearest
 // `capacity_time_s` always among them; frames whose triangles differ from the first are
-// left out. nullopt when the .pvd is missing or holds no usable frame.
+// left out. nullopt when the .pvd is missing or holds no usable frame. The urine sections
+// come from fluid.pvd in the same folder, when there is one (the frame nearest in time).
 std::optional<WallViewer> load_wall_viewer(const std::filesystem::path& pvd, double capacity_time_s,
                                            double axis_start_s, std::size_t max_frames = 48);
 
