@@ -150,3 +150,42 @@ TEST(SnakemakeExport, TheNeobladderStudyPlansEveryVariantWithItsOwnResources) {
   // vesica-surface makes 2,424 triangles of the 40 cm tube at 6 mm edges.
   EXPECT_NEAR(tube40, 2424, 0.1 * 2424);
 }
+
+// The shipped study, cut to the 40 cm tube and the sphere of the same tissue, filled to
+// 300 ml without voiding, run by Snakemake with its local executor: every variant's
+// simulation completes, and Hinman's principle holds (P = 2T/r: the detubularized sphere
+// holds the same volume at a lower pressure than the tube, or more before the limit).
+TEST(SnakemakeExport, SnakemakeRunsTheNeobladderStudyAndTheSphereFillsAtLowerPressure) {
+  const fs::path dir = scratch_dir("snakemake-neobladder-run");
+  VESICA_REQUIRE_SNAKEMAKE(dir);
+  std::string study = slurp(source_dir() / "pipelines" / "neobladder-whatif.yaml");
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = study.find(from);
+    ASSERT_NE(at, std::string::npos) << "the shipped study no longer says: " << from;
+    study.replace(at, from.size(), to);
+  };
+  replace("surface.shape: [tubular, studer, hautmann, sphere]", "surface.shape: [tubular, sphere]");
+  replace("surface.ileum_length_cm: [40, 50, 60]", "surface.ileum_length_cm: [40]");
+  replace("capacity_ml: 800", "capacity_ml: 300");
+  replace("drive: straining", "no_void: true");
+  write_text(dir / "study.yaml", study);
+  const auto sm = snakemake(dir / "study.yaml", dir / "work", dir);
+  ASSERT_EQ(sm.exit_code, 0) << sm.err;
+
+  std::map<std::string, nlohmann::json> summary;  // by shape
+  for (const auto& e : fs::directory_iterator(dir / "work" / "variants")) {
+    const std::string name = e.path().filename().string();
+    const std::string shape = name.find("sphere") != std::string::npos ? "sphere" : "tubular";
+    summary[shape] = nlohmann::json::parse(slurp(e.path() / "sim" / "summary.json"));
+    EXPECT_TRUE(summary[shape]["completed"].get<bool>()) << name;
+  }
+  ASSERT_EQ(summary.size(), 2u);
+  const double v_tube = summary["tubular"]["capacity_ml"].get<double>();
+  const double v_sphere = summary["sphere"]["capacity_ml"].get<double>();
+  const double p_tube = summary["tubular"]["pdet_at_capacity_cmh2o"].get<double>();
+  const double p_sphere = summary["sphere"]["pdet_at_capacity_cmh2o"].get<double>();
+  std::printf("[ snakemake ] tube %.1f ml at %.2f cmH2O, sphere %.1f ml at %.2f cmH2O\n", v_tube,
+              p_tube, v_sphere, p_sphere);
+  EXPECT_GE(v_sphere, v_tube - 1e-6);
+  if (v_sphere - v_tube < 1e-6) EXPECT_LT(p_sphere, p_tube);
+}

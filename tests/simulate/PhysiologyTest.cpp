@@ -98,7 +98,45 @@ void print(const std::string& what, const SimulateRun& r) {
             << r.summary.value("compute_s", NAN) << " s" << std::endl;
 }
 
+// The number the README's status table quotes right after `before` (up to `after`), as
+// written, or "" when the table no longer says it.
+std::string quoted_in_readme(const std::string& before, const std::string& after) {
+  std::ifstream in(source_dir() / "README.md");
+  const std::string readme((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t row = readme.find("\n| simulate |");
+  const std::size_t at = readme.find(before, row);
+  if (row == std::string::npos || at == std::string::npos) return "";
+  const std::size_t from = at + before.size(), to = readme.find(after, from);
+  if (to == std::string::npos || to - from > 12) return "";
+  return readme.substr(from, to - from);
+}
+
+// Half a unit of the last digit `text` is written with (6.3 -> 0.05, 18 -> 0.5).
+double rounding_of(const std::string& text) {
+  const std::size_t dot = text.find('.');
+  return 0.5 * std::pow(10.0, dot == std::string::npos ? 0.0 : -double(text.size() - dot - 1));
+}
+
 }  // namespace
+
+// What the README says the default model does on the real CT bladder (its status table) is
+// what this very run gives, to the digits it quotes: the README's figures are a run's.
+TEST(Physiology, TheReadmeQuotesWhatTheDefaultRunGives) {
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const SimulateRun& r = default_run();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  struct Claim {
+    const char *before, *after, *key;
+  };
+  for (const Claim& c :
+       {Claim{"like the normal recording (", " cmH2O at capacity", "pdet_at_capacity_cmh2o"},
+        Claim{"voids it (Qmax ", " ml/s", "qmax_ml_s"}, Claim{" ml/s, PVR ", " ml)", "pvr_ml"}}) {
+    const std::string quoted = quoted_in_readme(c.before, c.after);
+    ASSERT_FALSE(quoted.empty()) << "README.md no longer quotes " << c.before << "..." << c.after;
+    EXPECT_NEAR(r.summary[c.key].get<double>(), std::stod(quoted), rounding_of(quoted) + 1e-9)
+        << c.key << ": the README quotes " << quoted;
+  }
+}
 
 TEST(Physiology, DefaultWallFillsTheCtBladderLikeTheRecording) {
   VESICA_REQUIRE_SHARED(recording, "data/urodynamics/normal-female-34y.csv");
