@@ -6,7 +6,7 @@
 // fitted values with their intervals, the RMSE, the fitted and measured curves, and the
 // constant and straight-line baselines of the measured curve for scale.
 // Usage: fit_bladder_wall WALL.vtu RECORDING.csv [--level 0|1] [--fit mu,k1,k2]
-//          [--start mu,k1,k2] [--k2 K2] [--end-filling-cmh2o P]
+//          [--start mu,k1,k2] [--k2 K2] [--end-filling-cmh2o P [--compliant-to-ml V]]
 //   --fit: the parameters fitted (of mu, k1, k2); --start their start values (mu and k1 in
 //   kPa, the catalogue's units, as compare's calibration reports them); --k2: k2 held at
 //   this value.
@@ -14,9 +14,14 @@
 //   P and that does not fall from 80 ml on (a grid over mu and k2, k1 from the constraint
 //   by bisection), for a default that ends filling inside the normal band
 //   (docs/physics.md §7.3) with the shape of a bladder's filling.
+//   --compliant-to-ml V (with --end-filling-cmh2o): only walls that, filled on past the
+//   recording to V, keep a compliance of at least 25 ml/cmH2O (the normal 20 with a
+//   quarter in hand) over every 100 ml and a Pdet of at most 15 cmH2O at V, as a normal
+//   bladder stores 400-600 ml (docs/physics.md §7.3).
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -109,6 +114,37 @@ double k1_for_end_filling(const compare::CystometryModel& pb, std::map<std::stri
   return p["k1"];
 }
 
+// A normal bladder's late filling (docs/physics.md §7.3): compliance at least this over
+// every 100 ml, and Pdet at most this where filling ends.
+// The grid screens on the lumped wall (level 0), whose late filling is a little more
+// compliant than the 3-D wall's: a quarter in hand.
+constexpr double kMinCompliance = 25.0;   // ml/cmH2O: the normal 20, a quarter in hand
+constexpr double kMaxPdetAtEnd = 15.0;    // cmH2O
+
+double pdet_at(const compare::Curve& c, double ml) {
+  return compare::PiecewiseLinear(c.x, c.y)(ml);
+}
+
+// The wall filled on to `to_ml`: its smallest compliance over 100 ml windows (50 ml apart)
+// and its Pdet there; nullopt when the run fails before.
+struct LateFilling {
+  double min_compliance = 0.0, pdet_at_end = 0.0;
+  bool normal() const { return min_compliance >= kMinCompliance && pdet_at_end <= kMaxPdetAtEnd; }
+};
+std::optional<LateFilling> late_filling(compare::CystometryModel pb,
+                                        const std::map<std::string, double>& params,
+                                        double to_ml) {
+  pb.protocol.capacity_ml = to_ml;
+  const compare::Curve c = filling(pb, params);
+  if (c.y.empty() || c.x.back() < to_ml - 1e-6) return std::nullopt;
+  LateFilling f{1e300, pdet_at(c, to_ml)};
+  for (double v = pb.protocol.start_ml; v + 100.0 <= to_ml + 1e-9; v += 50.0) {
+    const double rise = pdet_at(c, v + 100.0) - pdet_at(c, v);
+    f.min_compliance = std::min(f.min_compliance, rise > 0.0 ? 100.0 / rise : 1e300);
+  }
+  return f;
+}
+
 // Whether the curve never falls from `from_ml` on.
 bool rises_from(const compare::Curve& c, double from_ml) {
   for (std::size_t i = 1; i < c.x.size(); ++i)
@@ -120,15 +156,22 @@ bool rises_from(const compare::Curve& c, double from_ml) {
 // kRisingFromMl on: a grid over mu (kPa) and k2 on the lumped wall (level 0, milliseconds a
 // run), k1 from the constraint; then k1 solved again at the problem's own level for the
 // best (mu, k2).
-nlohmann::json constrained_fit(compare::CystometryModel pb, const Rows& m, double target_cmh2o) {
+nlohmann::json constrained_fit(compare::CystometryModel pb, const Rows& m, double target_cmh2o,
+                               double compliant_to_ml) {
   const int level = pb.run.level;
   pb.run.level = 0;
   double best = 1e300, best_mu = 0.0, best_k2 = 0.0;
   for (double mu = 0.6; mu <= 1.4 + 1e-9; mu += 0.05)
     for (double k2 = 0.01; k2 <= 0.08 + 1e-9; k2 += 0.005) {
       compare::Curve c;
-      k1_for_end_filling(pb, {{"mu", units::pa_from_kpa(mu)}, {"k2", k2}}, target_cmh2o, c);
+      const double k1 =
+          k1_for_end_filling(pb, {{"mu", units::pa_from_kpa(mu)}, {"k2", k2}}, target_cmh2o, c);
       if (c.y.empty() || !rises_from(c, kRisingFromMl)) continue;
+      if (compliant_to_ml > 0.0) {
+        const auto late = late_filling(
+            pb, {{"mu", units::pa_from_kpa(mu)}, {"k2", k2}, {"k1", k1}}, compliant_to_ml);
+        if (!late || !late->normal()) continue;
+      }
       if (const double e = rmse_at_rows(c, m); e < best) {
         best = e;
         best_mu = mu;
@@ -140,7 +183,15 @@ nlohmann::json constrained_fit(compare::CystometryModel pb, const Rows& m, doubl
   const double k1 = k1_for_end_filling(pb, {{"mu", units::pa_from_kpa(best_mu)}, {"k2", best_k2}},
                                        target_cmh2o, c);
   const compare::PiecewiseLinear model(c.x, c.y);
-  return nlohmann::json{{"mu_kpa", best_mu},
+  nlohmann::json late = nullptr;
+  if (compliant_to_ml > 0.0)
+    if (const auto f = late_filling(
+            pb, {{"mu", units::pa_from_kpa(best_mu)}, {"k2", best_k2}, {"k1", k1}}, compliant_to_ml))
+      late = {{"to_ml", compliant_to_ml},
+              {"min_compliance_ml_per_cmh2o", f->min_compliance},
+              {"pdet_at_end_cmh2o", f->pdet_at_end}};
+  return nlohmann::json{{"late_filling", late},
+                        {"mu_kpa", best_mu},
                         {"k1_pa", k1},
                         {"k2", best_k2},
                         {"rmse_at_rows_cmh2o", rmse_at_rows(c, m)},
@@ -197,7 +248,7 @@ int main(int argc, char** argv) try {
     return 2;
   }
   int level = 1;
-  double end_filling = -1.0;
+  double end_filling = -1.0, compliant_to_ml = -1.0;
   std::vector<std::string> names = {"mu", "k1", "k2"};
   std::map<std::string, double> start = {{"mu", 1.0}, {"k1", 0.1}, {"k2", 0.03}};
   std::map<std::string, double> held;  // material parameters (SI) not fitted
@@ -206,6 +257,7 @@ int main(int argc, char** argv) try {
     if (option == "--level") level = std::stoi(argv[a + 1]);
     if (option == "--k2") held["k2"] = std::stod(argv[a + 1]);
     if (option == "--end-filling-cmh2o") end_filling = std::stod(argv[a + 1]);
+    if (option == "--compliant-to-ml") compliant_to_ml = std::stod(argv[a + 1]);
     if (option == "--fit" || option == "--start") {
       std::stringstream s(argv[a + 1]);
       std::vector<std::string> items;
@@ -232,7 +284,7 @@ int main(int argc, char** argv) try {
   }
   pb.protocol.capacity_ml = hi;
 
-  nlohmann::json out = end_filling > 0.0 ? constrained_fit(pb, rows, end_filling)
+  nlohmann::json out = end_filling > 0.0 ? constrained_fit(pb, rows, end_filling, compliant_to_ml)
                                          : calibration_fit(pb, measured, rows, names, start);
   const auto [constant, line] = baselines(rows);
   out["level"] = level;
