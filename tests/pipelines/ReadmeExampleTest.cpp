@@ -5,12 +5,15 @@
 // files the README names, and every claim the comments make is checked.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <regex>
 #include <set>
 
 #include "PipelineTestSupport.h"
 #include "ToolEdits.h"
 #include "vesica/core/ContentHash.h"
+#include "vesica/io/VtuFile.h"
 
 namespace fs = std::filesystem;
 using namespace vesica::test;
@@ -76,6 +79,29 @@ fs::path user_folder(const std::string& name) {
   return dir;
 }
 
+// How many of `bins` equal parts of the colour bar [lo, hi] hold at least 2 % of the wall's
+// triangles (the outlet, region 2, left out), by their σ1 = the larger of
+// cauchy_principal_kpa: the colours the picture can show.
+int occupied_colour_bins(const vesica::io::VtuGrid& frame, double lo, double hi, int bins) {
+  const vesica::io::VtuArray* stress = frame.cell_array("cauchy_principal_kpa");
+  const vesica::io::VtuArray* region = frame.cell_array("region");
+  if (!stress || !(hi > lo)) return 0;
+  std::vector<int> count(static_cast<std::size_t>(bins), 0);
+  int wall = 0;
+  for (Eigen::Index t = 0; t < frame.triangles.rows(); ++t) {
+    const auto at = [&](const vesica::io::VtuArray* a, int c) {
+      return a->values[static_cast<std::size_t>(t * a->components + c)];
+    };
+    if (region && static_cast<int>(at(region, 0)) == 2) continue;
+    const double sigma1 = std::max(at(stress, 0), at(stress, stress->components > 1 ? 1 : 0));
+    const int bin = static_cast<int>(std::floor((sigma1 - lo) / (hi - lo) * bins));
+    ++count[static_cast<std::size_t>(std::clamp(bin, 0, bins - 1))];
+    ++wall;
+  }
+  return static_cast<int>(
+      std::count_if(count.begin(), count.end(), [&](int n) { return n >= 0.02 * wall; }));
+}
+
 }  // namespace
 
 // The block as one shell script, as typed: from the checkout (its `DATA=$PWD/...` line),
@@ -121,6 +147,15 @@ TEST(ReadmeExample, ThePipelineRunAndItsEditAndRerunWorkAsWritten) {
   EXPECT_EQ(entries(dir / "out"),
             named_in(run.prose.substr(names, run.prose.find(": the stages'") - names)));
   EXPECT_EQ(entries(dir / "out/phantom"), std::set<std::string>{"dicom"});
+  // The report's stress picture is not one colour: its frame's wall spreads over at least
+  // four of eight equal parts of the colour bar it was drawn with.
+  const auto facts = nlohmann::json::parse(slurp(dir / "out/report/wall-stress.json"));
+  const vesica::io::VtuGrid frame =
+      vesica::io::read_vtu(dir / "out/sim/series" / facts["frame"].get<std::string>());
+  EXPECT_GE(occupied_colour_bins(frame, facts["colour_bar_kpa"][0].get<double>(),
+                                 facts["colour_bar_kpa"][1].get<double>(), 8),
+            4)
+      << facts.dump();
 
   const Snippet edit = snippet("## Edit and rerun");
   ASSERT_EQ(edit.lines.size(), 5u);
