@@ -71,7 +71,11 @@ class RoundTrip : public ::testing::TestWithParam<std::tuple<const char*, bool, 
 TEST_P(RoundTrip, KeepsCountsConnectivityVolumeAndTags) {
   const auto [extension, ascii, stored] = GetParam();
   const TriangleSurface original = tagged_ellipsoid();
-  const auto path = scratch_dir("surface-roundtrip") / (std::string("s") + extension);
+  // A folder per instance: ctest runs the instances side by side, and scratch_dir empties
+  // the folder it is given.
+  std::string instance = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::replace(instance.begin(), instance.end(), '/', '-');
+  const auto path = scratch_dir("surface-roundtrip-" + instance) / (std::string("s") + extension);
   surface::WriteOptions options;
   options.stl_ascii = ascii;
   surface::write_surface(original, path, options);
