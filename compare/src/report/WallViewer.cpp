@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
-#include "vesica/compare/analysis/WallStress.h"
 #include "vesica/compare/report/UrineSection.h"
 #include "vesica/core/Error.h"
 #include "vesica/core/Regions.h"
@@ -70,25 +70,51 @@ void robust_range(std::vector<float> values, double range[2]) {
   if (!(range[1] > range[0])) range[1] = range[0] + 1e-6 * std::max(1.0, std::abs(range[0]));
 }
 
-// The urine's section nearest the frame's time, its polygons split into triangles (a fan:
-// a tet's section is convex). A fluid frame that cannot be cut leaves the frame without one.
-void add_urine_section(WallViewerFrame& f, const std::filesystem::path& fluid_pvd,
-                       double normal[3]) {
-  UrineSection cut;
-  try {
-    const auto vtu = frame_at_time(fluid_pvd, f.time_s);
-    if (!vtu) return;
-    cut = urine_section(*vtu);
-  } catch (const Error&) {
-    return;
-  }
-  for (int k = 0; k < 3; ++k) normal[k] = cut.normal[k];
+// The urine's section as the frame's triangles (a fan: a tet's section is convex).
+void add_urine_section(WallViewerFrame& f, const UrineSection& cut) {
   for (const Eigen::Vector3d& x : cut.points_mm)
     for (int k = 0; k < 3; ++k) f.urine_points_mm.push_back(static_cast<float>(x[k]));
   for (double v : cut.speed_m_s) f.urine_speed_m_s.push_back(static_cast<float>(v));
   for (const std::vector<int>& polygon : cut.polygons)
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k)
       f.urine_triangles.insert(f.urine_triangles.end(), {polygon[0], polygon[k], polygon[k + 1]});
+}
+
+// Each frame's urine section: the step of the fluid series nearest its time, each step read
+// and cut once however many frames it serves. A series or a step that cannot be read
+// leaves those frames without one (the wall is still shown).
+void add_urine_sections(WallViewer& v, const std::filesystem::path& fluid_pvd) {
+  std::vector<std::pair<double, std::string>> steps;
+  try {
+    steps = io::read_pvd(fluid_pvd);
+  } catch (const Error&) {
+    return;
+  }
+  if (steps.empty()) return;
+  std::map<std::size_t, std::optional<UrineSection>> cuts;  // by step, read once
+  const auto cut_of = [&](std::size_t step) -> const std::optional<UrineSection>& {
+    auto [at, fresh] = cuts.try_emplace(step);
+    if (!fresh) return at->second;
+    try {
+      at->second = urine_section(fluid_pvd.parent_path() / steps[step].second);
+    } catch (const Error&) {
+      // this step stays without a section
+    }
+    return at->second;
+  };
+  for (WallViewerFrame& f : v.frames) {
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < steps.size(); ++i)
+      if (std::abs(steps[i].first - f.time_s) < std::abs(steps[nearest].first - f.time_s))
+        nearest = i;
+    const std::optional<UrineSection>& cut = cut_of(nearest);
+    if (!cut) continue;
+    add_urine_section(f, *cut);
+    for (int k = 0; k < 3; ++k) v.urine_normal[k] = cut->normal[k];
+    for (float speed : f.urine_speed_m_s)
+      v.urine_speed_max_m_s = std::max(v.urine_speed_max_m_s, double(speed));
+    v.has_urine = true;
+  }
 }
 
 }  // namespace
@@ -124,14 +150,8 @@ std::optional<WallViewer> load_wall_viewer(const std::filesystem::path& pvd, dou
       all_stretch.insert(all_stretch.end(), v.frames.back().stretch.begin(),
                          v.frames.back().stretch.end());
     }
-    const std::filesystem::path fluid = pvd.parent_path() / "fluid.pvd";
-    if (std::filesystem::exists(fluid))
-      for (WallViewerFrame& f : v.frames) {
-        add_urine_section(f, fluid, v.urine_normal);
-        for (float speed : f.urine_speed_m_s)
-          v.urine_speed_max_m_s = std::max(v.urine_speed_max_m_s, double(speed));
-        v.has_urine = v.has_urine || !f.urine_triangles.empty();
-      }
+    if (const auto fluid = pvd.parent_path() / "fluid.pvd"; std::filesystem::exists(fluid))
+      add_urine_sections(v, fluid);
     robust_range(std::move(all_sigma), v.sigma1_range_kpa);
     robust_range(std::move(all_stretch), v.stretch_range);
   } catch (const Error& e) {
