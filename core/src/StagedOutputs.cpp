@@ -103,7 +103,8 @@ std::optional<fs::path> keep_earlier(const fs::path& target) {
 }
 
 // Undoes the install of a file output: the earlier file back, or the new one removed
-// when there was none (vesica made it a moment ago).
+// when there was none (vesica made it a moment ago). A folder output stays: its earlier
+// content is gone with the exchange.
 void put_back(const std::optional<fs::path>& earlier, const Staged& s) {
   std::error_code ec;
   if (earlier)
@@ -123,12 +124,12 @@ void commit_staged_outputs() {
                           fs::is_directory(s.tmp) ? OutputKind::Folder : OutputKind::File);
     for (std::size_t i = 0; i < outputs.size(); ++i)
       if (!fs::is_directory(outputs[i].tmp)) earlier[i] = keep_earlier(outputs[i].target);
-    for (; done < outputs.size(); ++done) detail::install_output(outputs[done].tmp, outputs[done].target);
+    for (; done < outputs.size(); ++done)
+      detail::install_output(outputs[done].tmp, outputs[done].target);
   } catch (...) {
     // A rename refused half way (a full disk, a quota): the files already replaced go
     // back, so that the outputs stay the earlier set rather than a mixture.
-    for (std::size_t i = 0; i < done; ++i)
-      if (!fs::is_directory(outputs[i].target) || earlier[i]) put_back(earlier[i], outputs[i]);
+    for (std::size_t i = 0; i < done; ++i) put_back(earlier[i], outputs[i]);
     for (std::size_t i = done; i < outputs.size(); ++i) remove_quietly(outputs[i].tmp);
     for (std::size_t i = done; i < outputs.size(); ++i)
       if (earlier[i]) remove_quietly(*earlier[i]);
