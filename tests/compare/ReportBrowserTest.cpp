@@ -35,6 +35,21 @@ std::string chromium(const fs::path& profile) {
 // WebGL without a GPU: Chromium's software renderer, which it only uses when told.
 const char* kSoftwareWebGl = " --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader";
 
+#define VESICA_REQUIRE_CHROMIUM()                               \
+  if (run_command("command -v chromium").exit_code != 0) {      \
+    if (running_in_ci()) FAIL() << "chromium is not installed"; \
+    GTEST_SKIP() << "chromium is not installed";                \
+  }
+
+// The DOM of `page` after its scripts ran with `check` as the address's fragment (the
+// viewer's self-checks), in a 1280 x 900 window with software WebGL; the console on stderr.
+CommandResult dom_after_check(const fs::path& page, const fs::path& profile,
+                              const std::string& check) {
+  return run_command(chromium(profile) + kSoftwareWebGl +
+                     " --window-size=1280,900 --enable-logging=stderr --v=0 --dump-dom 'file://" +
+                     page.string() + "#" + check + "'");
+}
+
 // Fraction of pixels that are not (near) white, and whether several colours occur.
 struct Ink {
   double fraction = 0;
@@ -71,10 +86,7 @@ std::string body_data(const std::string& dom, const std::string& name) {
 }  // namespace
 
 TEST(ReportBrowser, TheReportFitsA1280WindowWithEveryPartDrawnAndPrints) {
-  if (run_command("command -v chromium").exit_code != 0) {
-    if (running_in_ci()) FAIL() << "chromium is not installed";
-    GTEST_SKIP() << "chromium is not installed";
-  }
+  VESICA_REQUIRE_CHROMIUM();
   const fs::path dir = scratch_dir("compare-browser");
   write_stress_sphere(dir / "wall.vtu");
   const auto run =
@@ -138,10 +150,7 @@ TEST(ReportBrowser, TheReportFitsA1280WindowWithEveryPartDrawnAndPrints) {
 
 // A simulation with its series: five frames of the stress sphere over filling and voiding.
 TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
-  if (run_command("command -v chromium").exit_code != 0) {
-    if (running_in_ci()) FAIL() << "chromium is not installed";
-    GTEST_SKIP() << "chromium is not installed";
-  }
+  VESICA_REQUIRE_CHROMIUM();
   const fs::path dir = scratch_dir("compare-browser-wall3d");
   fs::create_directories(dir / "sim/series");
   std::vector<std::pair<double, std::string>> steps;
@@ -163,10 +172,7 @@ TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
   const fs::path keep = artefact_dir("report");
   fs::copy_file(page, keep / "index-wall3d.html", fs::copy_options::overwrite_existing);
 
-  const auto dom = run_command(chromium(dir / "profile1") + kSoftwareWebGl +
-                               " --window-size=1280,900 --enable-logging=stderr --v=0 "
-                               "--dump-dom 'file://" +
-                               page.string() + "#check-slider'");
+  const auto dom = dom_after_check(page, dir / "profile1", "check-slider");
   ASSERT_EQ(dom.exit_code, 0) << dom.output;
   EXPECT_EQ(dom.output.find("Uncaught"), std::string::npos) << dom.output;
   EXPECT_NE(dom.output.find("<pre id=\"js-errors\" hidden=\"\"></pre>"), std::string::npos);
@@ -199,10 +205,7 @@ TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
 // Choosing the urine's speed draws its section inside a faint wall, on a colour bar from 0
 // to that largest speed.
 TEST(ReportBrowser, ALevelTwoRunShowsTheUrineSpeedInsideTheWall) {
-  if (run_command("command -v chromium").exit_code != 0) {
-    if (running_in_ci()) FAIL() << "chromium is not installed";
-    GTEST_SKIP() << "chromium is not installed";
-  }
+  VESICA_REQUIRE_CHROMIUM();
   const fs::path dir = scratch_dir("compare-browser-urine");
   fs::create_directories(dir / "sim/series");
   fs::create_directories(dir / "sim/fluid");
@@ -218,9 +221,9 @@ TEST(ReportBrowser, ALevelTwoRunShowsTheUrineSpeedInsideTheWall) {
   std::ofstream(dir / "sim/series.pvd") << vesica::io::pvd_text(steps);
   std::ofstream(dir / "sim/fluid.pvd") << vesica::io::pvd_text(fluid);
   fs::copy_file(compare_data("synthetic-history.csv"), dir / "sim/history.csv");
-  const auto run = run_command(compare_exe() + " --simulated " +
-                               (dir / "sim/history.csv").string() + " -o " +
-                               (dir / "report").string() + " --no-pdf");
+  const auto run =
+      run_command(compare_exe() + " --simulated " + (dir / "sim/history.csv").string() + " -o " +
+                  (dir / "report").string() + " --no-pdf");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   const fs::path page = dir / "report" / "index.html";
   const std::string html = read_text(page);
@@ -228,10 +231,9 @@ TEST(ReportBrowser, ALevelTwoRunShowsTheUrineSpeedInsideTheWall) {
   fs::copy_file(page, artefact_dir("report") / "index-urine.html",
                 fs::copy_options::overwrite_existing);
 
-  const auto dom = run_command(chromium(dir / "profile") + kSoftwareWebGl +
-                               " --window-size=1280,900 --dump-dom 'file://" + page.string() +
-                               "#check-urine'");
+  const auto dom = dom_after_check(page, dir / "profile", "check-urine");
   ASSERT_EQ(dom.exit_code, 0) << dom.output;
+  EXPECT_EQ(dom.output.find("Uncaught"), std::string::npos) << dom.output;
   EXPECT_NE(dom.output.find("<pre id=\"js-errors\" hidden=\"\"></pre>"), std::string::npos);
   EXPECT_EQ(body_data(dom.output, "wall3d-urine-frames"), "5");
   const std::string ink = body_data(dom.output, "wall3d-urine-ink");
