@@ -17,13 +17,15 @@ import os
 import random
 import re
 import resource
+import struct
 import subprocess
 import sys
 
 import pytest
 
-BIN = os.environ.get("VESICA_BIN_DIR", "build/bin")
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "python"))
+from vesica_tools import tool  # noqa: E402  (the Python tests' own helper)
 RECORDING = os.path.join(HERE, "..", "..", "pipelines", "data", "normal-female-34y.csv")
 CASES = 60
 HOSTILE_NUMBERS = [b"4294967296", b"18446744073709551616", b"-1", b"nan", b"0", b"1e308",
@@ -58,7 +60,6 @@ def nifti_field(data, rng):
     scaling) set to an extreme value."""
     fields = [(40, "<h"), (42, "<h"), (44, "<h"), (46, "<h"), (70, "<h"), (72, "<h"),
               (76, "<f"), (80, "<f"), (84, "<f"), (108, "<f"), (112, "<f"), (116, "<f")]
-    import struct
     offset, fmt = rng.choice(fields)
     value = rng.choice([-1, 0, 32767, -32768] if fmt == "<h" else
                        [float("nan"), float("inf"), -1.0, 0.0, 1e30])
@@ -139,13 +140,6 @@ def work_parameters(wall_path, seed):
 
 
 # --- the tests: one interpreter per format --------------------------------------------------
-
-def tool(*args):
-    result = subprocess.run([os.path.join(BIN, args[0]), *map(str, args[1:])],
-                            capture_output=True, text=True)
-    assert result.returncode == 0, result.stdout + result.stderr
-    return result.stdout
-
 
 @pytest.fixture(scope="module")
 def originals(tmp_path_factory):

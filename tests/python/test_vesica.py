@@ -14,17 +14,10 @@ import numpy as np
 import pytest
 
 import vesica
+from vesica_tools import tool
 
-BIN = os.environ.get("VESICA_BIN_DIR", "build/bin")
 MATERIAL = {"material": "neo-hookean", "mu_kpa": 5}  # --material neo-hookean --mu-kpa 5
 PROTOCOL = {"start_ml": 50, "capacity_ml": 120, "fill_rate_ml_min": 50, "no_void": True}
-
-
-def tool(*args):
-    result = subprocess.run([os.path.join(BIN, args[0]), *map(str, args[1:])],
-                            capture_output=True, text=True)
-    assert result.returncode == 0, result.stdout + result.stderr
-    return result.stdout
 
 
 @pytest.fixture(scope="module")
