@@ -228,9 +228,10 @@ TEST(Resume, AKilledRunExitsWithTheSignalsStatusAndResumesOnTheCommandLine) {
 TEST(Resume, AStopInTheMiddleOfAStepCheckpointsTheLastCompletedStep) {
   // A SIGTERM at the 16th factorisation (tests/support/StopAfterFactorizations.c,
   // preloaded), inside a filling step (the tangent is reused within and across filling
-  // steps, so the filling of this sphere takes a little over 20): the run stops there (not at the end of the step),
-  // its checkpoint is the step before, and the run resumed from it is the run never
-  // stopped (issue 37: a batch scheduler's SIGTERM).
+  // steps, so there are fewer factorisations than iterations, and the 16th comes before
+  // voiding begins): the run stops there (not at the end of the step), its checkpoint is
+  // the step before, and the run resumed from it is the run never stopped (a batch
+  // scheduler's SIGTERM).
   CliRuns cli("resume-mid-step");
   ASSERT_EQ(cli.simulate("whole", "").exit_code, 0);
   const CommandResult stopped = run_command(
