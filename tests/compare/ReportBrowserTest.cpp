@@ -4,8 +4,8 @@
 // no element wider than the window; no debug text. report.pdf, printed by the same
 // chromium, must be a PDF of several A4 pages. The interactive wall (WebGL through
 // SwiftShader, as a machine without a GPU draws it) must draw, and its time slider move the
-// trace's cursor. The screenshots, the pages and the PDF stay in build/test-artefacts/report
-// for a look.
+// trace's cursor. The screenshots, the pages and the PDF stay in build/test-artefacts/report*
+// for a look (a folder per test: ctest runs them side by side, and each empties its own).
 #include <regex>
 #include <set>
 
@@ -169,7 +169,7 @@ TEST(ReportBrowser, TheInteractiveWallDrawsAndItsSliderMovesTheTraceCursor) {
   const std::string html = read_text(page);
   ASSERT_NE(html.find("id=\"wall3d-canvas\""), std::string::npos) << "no interactive wall";
   EXPECT_EQ(html.find("<script src="), std::string::npos) << "the page must fetch nothing";
-  const fs::path keep = artefact_dir("report");
+  const fs::path keep = artefact_dir("report-wall3d");  // each test its own: they run side by side
   fs::copy_file(page, keep / "index-wall3d.html", fs::copy_options::overwrite_existing);
 
   const auto dom = dom_after_check(page, dir / "profile1", "check-slider");
@@ -228,7 +228,7 @@ TEST(ReportBrowser, ALevelTwoRunShowsTheUrineSpeedInsideTheWall) {
   const fs::path page = dir / "report" / "index.html";
   const std::string html = read_text(page);
   ASSERT_NE(html.find("<option value=\"speed\">"), std::string::npos) << "no urine speed to choose";
-  fs::copy_file(page, artefact_dir("report") / "index-urine.html",
+  fs::copy_file(page, artefact_dir("report-urine") / "index-urine.html",
                 fs::copy_options::overwrite_existing);
 
   const auto dom = dom_after_check(page, dir / "profile", "check-urine");

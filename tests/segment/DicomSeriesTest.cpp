@@ -45,7 +45,11 @@ void expect_round_trip(seg::PhantomOrientation orientation, bool reverse) {
   spec.orientation = orientation;
   spec.reverse_slices = reverse;
   const auto image = seg::make_phantom(spec);
-  const auto dir = vesica::test::scratch_dir("dicom-round-trip");
+  // A folder per case: ctest runs the cases side by side, and scratch_dir empties it.
+  const auto dir = vesica::test::scratch_dir(
+      std::string("dicom-round-trip-") +
+      (orientation == seg::PhantomOrientation::Axial ? "axial" : "oblique") +
+      (reverse ? "-reversed" : ""));
   const auto info = seg::write_dicom_series(*image, dir / "series", "test");
   const auto v = seg::read_volume(dir / "series", "");
   EXPECT_EQ(v.series_key, seg::series_key(info.series_uid));
