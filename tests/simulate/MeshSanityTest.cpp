@@ -19,7 +19,8 @@ namespace {
 
 // The reader's error for `mesh` written as a .vtu, or "" when it was accepted.
 std::string refusal(const VolumeMesh& mesh, const std::string& name, bool urine = false) {
-  const fs::path file = vesica::test::scratch_dir("simulate-sanity") / (name + ".vtu");
+  // A folder per case: ctest runs the cases side by side, and scratch_dir empties it.
+  const fs::path file = vesica::test::scratch_dir("simulate-sanity-" + name) / (name + ".vtu");
   vesica::io::write_mesh_vtu(mesh, file);
   try {
     if (urine)
