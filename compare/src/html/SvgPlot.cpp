@@ -224,7 +224,8 @@ SvgPlot::Range SvgPlot::data_range(bool x_axis) const {
 }
 
 std::string SvgPlot::render() const {
-  std::size_t entries = series_.size();
+  std::size_t entries = 0;
+  for (const auto& s : series_) entries += s.label.empty() ? 0 : 1;
   for (const auto& m : marks_) entries += m.label.empty() ? 0 : 1;
   const int left = 64, right = legend_below_ ? 16 : 230, top = 34, bottom = 48;
   const int legend_height = legend_below_ ? 18 * static_cast<int>(entries) + 16 : 0;
@@ -308,8 +309,19 @@ std::string SvgPlot::render() const {
         break;
     }
   }
+  for (const auto& s : series_) {  // areas under the lines
+    if (s.style != Style::Area) continue;
+    std::string d;
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+      if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+        d += (d.empty() ? "M" : " L") + num(X(s.x[i])) + ' ' + num(Y(s.y[i]));
+    if (!d.empty())
+      o << "<path class=\"area\" d=\"" << d << " Z\" fill=\"" << xml_escape(s.color)
+        << "\" fill-opacity=\"0.18\" stroke=\"none\"/>\n";
+  }
   for (const auto& s : series_) {
     const std::string c = xml_escape(s.color);
+    if (s.style == Style::Area) continue;
     if (s.style != Style::Points) {
       std::string d;
       bool pen_down = false;
@@ -358,9 +370,13 @@ std::string SvgPlot::legend(double x0, double y0, bool below) const {
   };
   double lx = 0, ly = 0;
   for (const auto& s : series_) {
+    if (s.label.empty()) continue;
     at(lx, ly);
     const std::string c = xml_escape(s.color);
-    if (s.style == Style::Points)
+    if (s.style == Style::Area)
+      o << "<rect x=\"" << lx << "\" y=\"" << ly - 10 << "\" width=\"20\" height=\"10\" fill=\""
+        << c << "\" fill-opacity=\"0.18\"/>";
+    else if (s.style == Style::Points)
       o << "<circle cx=\"" << lx + 10 << "\" cy=\"" << ly - 4 << "\" r=\""
         << std::min(s.radius, 6.0) << "\" fill=\"" << c << "\"/>";
     else

@@ -19,7 +19,9 @@ namespace vesica::compare {
 
 class SvgPlot {
  public:
-  enum class Style { Line, Points, LinePoints };
+  // Area: x, y are a closed outline (a band: the upper curve, then the lower one backwards),
+  // filled lightly under every line; a series without a label has no legend entry.
+  enum class Style { Line, Points, LinePoints, Area };
   struct Series {
     std::string label;
     std::vector<double> x, y;
