@@ -18,8 +18,8 @@ constexpr std::uintmax_t kMaxPipelineFileBytes = std::uintmax_t{4} << 20;
 const std::vector<std::string> kTopKeys = {"pipeline", "workdir", "inputs", "stages", "study"};
 const std::vector<std::string> kStageKeys = {"tool",   "input",    "inputs", "output",
                                              "report", "manifest", "params"};
-const std::vector<std::string> kStudyKeys = {"matrix", "variants", "max_runs", "question",
-                                             "limits"};
+const std::vector<std::string> kStudyKeys = {"matrix",   "variants", "uncertainty",
+                                             "max_runs", "question", "limits"};
 const std::vector<std::string> kLimitKeys = {"min", "max"};
 
 SourcePos pos_of(const YAML::Node& node) {
@@ -245,7 +245,9 @@ class Reader {
       if (key == "matrix") {
         read_matrix(kv.second);
       } else if (key == "variants") {
-        read_variants(kv.second);
+        read_named_overrides(kv.second, "study.variants", spec_.study.variants);
+      } else if (key == "uncertainty") {
+        read_named_overrides(kv.second, "study.uncertainty", spec_.study.uncertainty);
       } else if (key == "question") {
         if (scalar(kv.second, "study.question")) spec_.study.question = kv.second.as<std::string>();
       } else if (key == "limits") {
@@ -320,26 +322,27 @@ class Reader {
     }
   }
 
-  void read_variants(const YAML::Node& v) {
-    if (!map(v, "study.variants")) return;
+  // `variants:` and `uncertainty:`: name -> {stage.param: value, ...} (or nothing).
+  void read_named_overrides(const YAML::Node& v, const std::string& where,
+                            std::vector<Variant>& out) {
+    if (!map(v, where)) return;
     for (const auto& kv : v) {
       Variant variant;
       if (!key_text(kv.first, variant.name)) continue;
       variant.pos = pos_of(kv.first);
       if (variant.name.find_first_of("/@ ") != std::string::npos)
         d_.add(variant.pos,
-               "variant name '" + variant.name + "' may not contain '/', '@' or spaces");
-      if (!kv.second.IsNull() && !map(kv.second, "study.variants." + variant.name)) continue;
+               "name '" + variant.name + "' in " + where + " may not contain '/', '@' or spaces");
+      if (!kv.second.IsNull() && !map(kv.second, where + "." + variant.name)) continue;
       if (kv.second.IsMap())
         for (const auto& o : kv.second) {
           Override ov;
           std::string param;
           if (!split_stage_param(o.first, ov.stage, param)) continue;
-          if (read_param(param, pos_of(o.first), o.second, "study.variants." + variant.name,
-                         ov.param))
+          if (read_param(param, pos_of(o.first), o.second, where + "." + variant.name, ov.param))
             variant.overrides.push_back(ov);
         }
-      spec_.study.variants.push_back(variant);
+      out.push_back(variant);
     }
   }
 

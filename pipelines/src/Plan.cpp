@@ -415,15 +415,29 @@ class Planner {
       if (!seen.insert(v.name).second) d_.add(v.pos, "variant '" + v.name + "' defined twice");
       for (const auto& o : v.overrides) check(o.stage, o.param.pos);
     }
+    std::set<std::string> ends;
+    for (const auto& v : spec_.study.uncertainty) {
+      if (!ends.insert(v.name).second)
+        d_.add(v.pos, "uncertainty end '" + v.name + "' defined twice");
+      if (v.overrides.empty())
+        d_.add(v.pos, "uncertainty end '" + v.name + "' changes no parameter");
+      for (const auto& o : v.overrides) check(o.stage, o.param.pos);
+    }
   }
 
   void expand(const std::vector<std::size_t>& order) {
     std::vector<StudyRun> runs = expand_study(spec_.study);
     if (runs.empty()) runs.push_back({});
     std::map<std::size_t, std::size_t> shared;  // base index -> plan index
+    // Per ordinary run: which base stages it varies and the copy it uses of each.
+    std::map<std::string, std::pair<std::vector<bool>, std::vector<std::size_t>>> by_run;
+    // A stage only an uncertainty end varies is copied once per end, whatever run it bounds.
+    std::map<std::pair<std::string, std::size_t>, std::size_t> end_only;
     for (const auto& run : runs) {
       std::vector<bool> varied(base_.size(), false);
       std::vector<std::size_t> planned(base_.size(), 0);
+      const bool is_bound = !run.bound.empty();
+      const auto* parent = is_bound ? &by_run[run.bound_of] : nullptr;
       for (std::size_t i : order) {
         const BaseStage& b = base_[i];
         varied[i] = run.overrides.count(b.spec->name) > 0;
@@ -432,22 +446,50 @@ class Planner {
           planned[i] = shared[i];
           continue;
         }
-        planned[i] = add_stage(b, varied[i] ? run : StudyRun{}, varied, planned);
+        if (is_bound) {
+          bool by_end = run.bound_overrides.count(b.spec->name) > 0;
+          for (std::size_t d : b.deps)
+            by_end = by_end || plan_.stages[planned[d]].bound == run.bound;
+          if (!by_end) {  // the bounded run's own copy
+            planned[i] = parent->second[i];
+            continue;
+          }
+          if (!parent->first[i]) {  // varied by the end alone
+            const auto key = std::make_pair(run.bound, i);
+            if (!end_only.count(key)) {
+              StudyRun only;
+              only.name = run.bound;
+              only.bound = run.bound;
+              only.overrides = run.bound_overrides;
+              end_only[key] = add_stage(b, only, planned);
+            }
+            planned[i] = end_only[key];
+            continue;
+          }
+        }
+        planned[i] = add_stage(b, varied[i] ? run : StudyRun{}, planned);
         if (!varied[i]) shared[i] = planned[i];
       }
+      if (!is_bound) by_run[run.name] = {varied, planned};
     }
   }
 
-  std::size_t add_stage(const BaseStage& b, const StudyRun& run, const std::vector<bool>& varied,
+  // `planned` holds the copies this run reads from: an input a stage copy writes is read
+  // from that copy's folder.
+  std::size_t add_stage(const BaseStage& b, const StudyRun& run,
                         const std::vector<std::size_t>& planned) {
     const StageSpec& s = *b.spec;
     const std::string prefix = run.name.empty() ? "" : "variants/" + run.name + "/";
     auto input = [&](const std::string& path, long producer) {
-      return producer >= 0 && varied[static_cast<std::size_t>(producer)] ? prefix + path : path;
+      if (producer < 0) return path;
+      const std::string& v = plan_.stages[planned[static_cast<std::size_t>(producer)]].variant;
+      return v.empty() ? path : "variants/" + v + "/" + path;
     };
     PlannedStage p;
     p.stage = s.name;
     p.variant = run.name;
+    p.bound = run.bound;
+    p.bound_of = run.bound_of;
     p.id = run.name.empty() ? s.name : s.name + "@" + run.name;
     p.tool = s.tool;
     p.executable = options_.bin_dir / ("vesica-" + s.tool);

@@ -14,6 +14,28 @@ std::string folder_safe(const Param& p) {
   return s;
 }
 
+// Each run followed by its runs at the ends of the uncertain ranges.
+std::vector<StudyRun> with_uncertainty(const StudySpec& study, const std::vector<StudyRun>& runs) {
+  if (study.uncertainty.empty()) return runs;
+  std::vector<StudyRun> out;
+  for (const StudyRun& run : runs) {
+    out.push_back(run);
+    for (const Variant& end : study.uncertainty) {
+      StudyRun r = run;
+      r.name = run.name.empty() ? end.name : run.name + "_" + end.name;
+      r.bound = end.name;
+      r.bound_of = run.name;
+      for (const auto& o : end.overrides) {
+        r.bound_overrides[o.stage].push_back(o.param);
+        auto& params = r.overrides[o.stage];
+        params = apply_overrides(params, {o.param});
+      }
+      out.push_back(r);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 long long study_run_count(const StudySpec& study) {
@@ -24,7 +46,9 @@ long long study_run_count(const StudySpec& study) {
     if (values > 0 && runs > kTooManyRuns / values) return kTooManyRuns;
     runs *= values;
   }
-  return std::min(runs, kTooManyRuns);
+  const auto ends = static_cast<long long>(study.uncertainty.size()) + 1;
+  if (runs > kTooManyRuns / ends) return kTooManyRuns;
+  return std::min(runs * ends, kTooManyRuns);
 }
 
 std::vector<StudyRun> expand_study(const StudySpec& study) {
@@ -53,7 +77,7 @@ std::vector<StudyRun> expand_study(const StudySpec& study) {
       }
     runs = std::move(next);
   }
-  return runs;
+  return with_uncertainty(study, runs);
 }
 
 std::vector<Param> apply_overrides(const std::vector<Param>& base,

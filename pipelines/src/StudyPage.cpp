@@ -29,10 +29,6 @@ const char* kColours[] = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
                           "#e69f00", "#56b4e9", "#000000", "#999999"};
 const char* kDashes[] = {"", "9 4", "2 3", "12 3 3 3"};
 
-std::string label_of(const StudyRow& row) {
-  return row.variant.empty() ? "(shared)" : row.variant;
-}
-
 // Three significant digits; whole numbers from 1000 on in full.
 std::string sig3(double v) {
   char buf[32];
@@ -81,6 +77,45 @@ void add_curve(SvgPlot& plot, const std::string& label, const Style& s, std::vec
   plot.add(std::move(series));
 }
 
+// The filling part of a curve: volume and Pdet up to the first row of largest volume.
+std::pair<std::vector<double>, std::vector<double>> filling_of(const CystometryCurve& c) {
+  const auto end = static_cast<long>(c.filling_end()) + 1;
+  return {{c.volume_ml.begin(), c.volume_ml.begin() + end},
+          {c.pdet_cmh2o.begin(), c.pdet_cmh2o.begin() + end}};
+}
+
+// The band between the fillings of a row's uncertainty ends, in the row's colour: under
+// the softer wall's curve (the lower Pdet where both filled) and over the stiffer one's.
+// Where the stiffer wall stopped at the pressure limit and the softer filled on, the band
+// reaches up to where the stiffer stopped: a wall between them holds that pressure somewhere
+// between the two volumes. With two ends, the soft and the stiff wall bound every wall
+// between them, as Pdet at a volume grows with each parameter.
+void add_band(SvgPlot& plot, const StudyReport& report, const StudyRow& row, const Style& s) {
+  std::vector<const StudyRow*> ends;
+  for (const StudyRow* b : report.bounds_of(row))
+    if (b->curve && b->curve->size() > 0) ends.push_back(b);
+  if (ends.size() < 2) return;
+  auto lower = filling_of(*ends.front()->curve);
+  auto upper = filling_of(*ends.back()->curve);
+  // The upper curve is the one with the higher Pdet at the largest volume both reached.
+  const double common = std::min(lower.first.back(), upper.first.back());
+  const auto pdet_at = [common](const std::pair<std::vector<double>, std::vector<double>>& c) {
+    std::size_t k = 0;
+    while (k + 1 < c.first.size() && c.first[k + 1] <= common) ++k;
+    return c.second[k];
+  };
+  if (pdet_at(lower) > pdet_at(upper)) std::swap(lower, upper);
+  auto [x, y] = lower;
+  const double top = std::max(upper.second.back(), lower.second.back());
+  if (lower.first.back() > upper.first.back()) {  // up to where the stiffer one stopped
+    x.push_back(lower.first.back());
+    y.push_back(top);
+  }
+  x.insert(x.end(), upper.first.rbegin(), upper.first.rend());
+  y.insert(y.end(), upper.second.rbegin(), upper.second.rend());
+  plot.add(SvgPlot::Series{"", std::move(x), std::move(y), SvgPlot::Style::Area, s.colour});
+}
+
 // Pdet against volume while filling, one line per variant. With `limits` the axes take in
 // the design limits and the study's own; without, the pressure axis fits the data, because
 // a compliant pouch stays far below the band and its curves would look flat.
@@ -94,13 +129,11 @@ std::string filling_plot(const StudyReport& report, bool limits) {
   for (std::size_t i = 0; i < report.rows().size(); ++i) {
     const StudyRow& row = report.rows()[i];
     if (!row.curve || row.curve->size() == 0) continue;
-    const CystometryCurve& c = *row.curve;
-    const auto end = static_cast<long>(c.filling_end()) + 1;
-    std::vector<double> v(c.volume_ml.begin(), c.volume_ml.begin() + end);
-    std::vector<double> p(c.pdet_cmh2o.begin(), c.pdet_cmh2o.begin() + end);
+    auto [v, p] = filling_of(*row.curve);
     v_max = std::max(v_max, *std::max_element(v.begin(), v.end()) * 1.05);
     p_max = std::max(p_max, *std::max_element(p.begin(), p.end()) * 1.05);
-    add_curve(plot, label_of(row), styles[i], v, p);
+    add_band(plot, report, row, styles[i]);
+    add_curve(plot, report.label(row), styles[i], v, p);
   }
   plot.x_range(0.0, v_max).y_range(0.0, p_max > 0.0 ? p_max : 1.0);
   if (limits) {
@@ -129,7 +162,7 @@ std::string flow_plot(const StudyReport& report) {
       t.push_back(c.time_s[k] - c.time_s[end]);
       q.push_back(c.flow_ml_s[k]);
     }
-    add_curve(plot, label_of(row), styles[i], t, q);
+    add_curve(plot, report.label(row), styles[i], t, q);
   }
   if (plot.empty()) return "<p class=\"missing\">No variant reached voiding.</p>\n";
   return plot.render();
@@ -148,6 +181,47 @@ std::string breakable(const std::string& name) {
   std::string out;
   for (char c : xml_escape(name)) out += c == '_' ? std::string("_<wbr>") : std::string(1, c);
   return out;
+}
+
+// The read-outs an interval is shown for: those of filling, which the uncertainty's runs
+// make (they fill only).
+bool has_interval(const std::string& key) {
+  return key == "pdet_at_300ml_cmh2o" || key == "pdet_at_500ml_cmh2o" ||
+         key == "compliance_ml_per_cmh2o" || key == "capacity_at_40cmh2o_ml";
+}
+
+// "<br><small>lo–hi</small>": the read-out at the ends of the uncertainty, lowest first.
+std::string interval(const StudyReport& report, const StudyRow& row, const std::string& key) {
+  if (!has_interval(key)) return "";
+  std::vector<StudyValue> at_ends;
+  for (const StudyRow* b : report.bounds_of(row))
+    for (const auto& [k, v] : StudyReport::values(*b))
+      if (k == key && v.value) at_ends.push_back(v);
+  if (at_ends.size() < 2) return "";
+  std::sort(at_ends.begin(), at_ends.end(),
+            [](const StudyValue& a, const StudyValue& b) { return *a.value < *b.value; });
+  return "<br><small class=\"interval\">" + shown(at_ends.front()) + "&ndash;" +
+         shown(at_ends.back()) + "</small>";
+}
+
+// What the uncertainty's ends change, read off the first row that has them: "soft: mu_kpa
+// 1, k1_kpa 0.06; stiff: ...".
+std::string ends_text(const StudyReport& report) {
+  for (const StudyRow& row : report.rows()) {
+    const auto bounds = report.bounds_of(row);
+    if (bounds.empty()) continue;
+    std::string text;
+    for (const StudyRow* b : bounds) {
+      std::string changed;
+      for (const auto& [k, v] : b->parameters) {
+        if (report.parameter(row, k) == v || k.find("no_void") != std::string::npos) continue;
+        changed += (changed.empty() ? "" : ", ") + k.substr(k.find('.') + 1) + " " + v;
+      }
+      text += (text.empty() ? "" : "; ") + b->bound + ": " + changed;
+    }
+    return text;
+  }
+  return "";
 }
 
 PictureScale picture_scale(const StudyReport& report) {
@@ -178,13 +252,13 @@ std::string table(const StudyReport& report) {
     const StudyRow& row = report.rows()[index];
     const std::string answer = row.status == "ok" ? report.answer(row) : row.status;
     o << "<tr><td class=\"rank\">" << ++rank << "</td><td class=\"variant\">"
-      << breakable(label_of(row)) << "</td><td class=\"answer "
+      << breakable(report.label(row)) << "</td><td class=\"answer "
       << (answer == "not run" ? "not-run" : answer) << "\">"
       << (answer.empty() ? "&ndash;" : xml_escape(answer)) << "</td>";
     for (const auto& k : keys) o << "<td>" << xml_escape(report.parameter(row, k)) << "</td>";
     o << "<td class=\"picture\">" << pouch_picture(row.capacity_stress, scale) << "</td>";
     for (const auto& [key, value] : StudyReport::values(row))
-      o << "<td>" << shown(value) << "</td>";
+      o << "<td>" << shown(value) << interval(report, row, key) << "</td>";
     const std::string where =
         row.capacity_stress.is_object() ? row.capacity_stress["summary"].value("where", "") : "";
     o << "<td class=\"where\">" << xml_escape(where) << "</td></tr>\n";
@@ -207,6 +281,12 @@ std::string answer_section(const StudyReport& report) {
   if (!sentence.empty())
     o << "<p class=\"sentence\" id=\"answer-sentence\"><b>Answer:</b> " << xml_escape(sentence)
       << " The table is ranked by it.</p>\n";
+  const std::string robust = robustness_answer(report);
+  if (!robust.empty())
+    o << "<p class=\"sentence\" id=\"robustness-sentence\"><b>Uncertainty:</b> "
+      << xml_escape(robust) << " Each variant was also filled with the wall at the ends of its "
+      << "documented ranges (" << xml_escape(ends_text(report))
+      << "): the bands on the filling curves and the intervals under the read-outs.</p>\n";
   if (report.limits().empty()) {
     o << "<p>The study file sets no <code>limits:</code>, so no variant is judged pass or "
          "fail.</p>\n</section>\n";
@@ -218,7 +298,7 @@ std::string answer_section(const StudyReport& report) {
   std::vector<std::string> pass, fail, open;
   for (const auto& row : report.rows()) {
     const std::string a = report.answer(row);
-    (a == "pass" ? pass : a == "fail" ? fail : open).push_back(label_of(row));
+    (a == "pass" ? pass : a == "fail" ? fail : open).push_back(report.label(row));
   }
   auto list = [](const std::vector<std::string>& names) {
     std::string s;
@@ -265,8 +345,9 @@ std::string notes(const StudyReport& report) {
   }
   for (const auto& row : report.rows())
     if (row.status != "ok")
-      o << "<p class=\"missing\">" << xml_escape(label_of(row)) << ": " << xml_escape(row.status)
-        << (row.failure.empty() ? "" : ": " + xml_escape(row.failure)) << "</p>\n";
+      o << "<p class=\"missing\">" << xml_escape(report.label(row)) << ": "
+        << xml_escape(row.status) << (row.failure.empty() ? "" : ": " + xml_escape(row.failure))
+        << "</p>\n";
   return o.str();
 }
 

@@ -43,14 +43,40 @@ bool better(const Standing& a, const Standing& b) {
   return a.pdet300 < b.pdet300;
 }
 
-std::string name_of(const StudyRow& row) {
-  return row.variant.empty() ? "the run" : row.variant;
-}
-
 std::string ml(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.0f ml", v);
   return buf;
+}
+
+// Indices into `standings`, best first.
+std::vector<std::size_t> ranked(const std::vector<Standing>& standings) {
+  std::vector<std::size_t> order(standings.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return better(standings[a], standings[b]);
+  });
+  return order;
+}
+
+// Every row read at one end of the uncertainty (a row without a run at that end has no
+// curve there, and ranks last).
+std::vector<Standing> standings_at(const StudyReport& report, const std::string& end) {
+  std::vector<Standing> standings;
+  for (const StudyRow& row : report.rows()) {
+    Standing s;
+    for (const StudyRow* b : report.bounds_of(row))
+      if (b->bound == end) s = standing_of(*b);
+    standings.push_back(s);
+  }
+  return standings;
+}
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    s += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
+  return s;
 }
 
 }  // namespace
@@ -58,12 +84,38 @@ std::string ml(double v) {
 std::vector<std::size_t> rank_by_capacity(const StudyReport& report) {
   std::vector<Standing> standings;
   for (const StudyRow& row : report.rows()) standings.push_back(standing_of(row));
-  std::vector<std::size_t> order(standings.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return better(standings[a], standings[b]);
-  });
-  return order;
+  return ranked(standings);
+}
+
+std::string robustness_answer(const StudyReport& report) {
+  const std::vector<std::string>& ends = report.uncertainty_ends();
+  const std::vector<std::size_t> order = rank_by_capacity(report);
+  if (ends.empty() || order.empty()) return "";
+  const std::string best = report.label(report.rows()[order.front()]);
+  std::vector<std::string> other_first, same_order, missing;
+  for (const std::string& end : ends) {
+    const std::vector<Standing> at = standings_at(report, end);
+    if (!at[order.front()].has_curve) {
+      missing.push_back(end);
+      continue;
+    }
+    const std::vector<std::size_t> o = ranked(at);
+    if (o.front() != order.front())
+      other_first.push_back(report.label(report.rows()[o.front()]) + " at the " + end + " end");
+    else if (o == order)
+      same_order.push_back(end);
+  }
+  if (!missing.empty())
+    return "Not known whether the ranking holds across the wall's uncertainty: " + best +
+           " has no run at the " + listed(missing) + " end.";
+  if (!other_first.empty())
+    return "Not robust to the wall's uncertainty: " + best + " ranks first as given, but " +
+           listed(other_first) + ".";
+  return "Robust to the wall's uncertainty: " + best + " ranks first at the " + listed(ends) +
+         " end" + (ends.size() > 1 ? "s" : "") + " of its ranges too" +
+         (same_order.size() == ends.size() ? ", and the whole order is the same"
+                                           : "; the order below it changes") +
+         ".";
 }
 
 std::string capacity_answer(const StudyReport& report) {
@@ -91,13 +143,13 @@ std::string capacity_answer(const StudyReport& report) {
   const StudyRow& best = report.rows()[order.front()];
   const Standing b = standing_of(best);
   std::string sentence = std::string("Largest capacity under ") + limit +
-                         " cmH2O: " + name_of(best) + " (" + (b.reached ? "" : "at least ") +
+                         " cmH2O: " + report.label(best) + " (" + (b.reached ? "" : "at least ") +
                          ml(b.capacity_ml) + (b.reached ? "" : ", never reaching the limit") + ")";
   std::vector<std::string> tied;
   for (std::size_t k = 1; k < order.size(); ++k) {
     const Standing s = standing_of(report.rows()[order[k]]);
     if (!b.reached && !s.reached && s.has_curve && s.capacity_ml == b.capacity_ml)
-      tied.push_back(name_of(report.rows()[order[k]]));
+      tied.push_back(report.label(report.rows()[order[k]]));
   }
   if (!tied.empty()) {
     sentence += ", as did ";
@@ -108,7 +160,7 @@ std::string capacity_answer(const StudyReport& report) {
   const StudyRow& worst = report.rows()[order.back()];
   const Standing w = standing_of(worst);
   if (w.has_curve && order.size() > 1 && w.reached)
-    sentence += "; smallest: " + name_of(worst) + " (" + ml(w.capacity_ml) + ")";
+    sentence += "; smallest: " + report.label(worst) + " (" + ml(w.capacity_ml) + ")";
   if (!any_reached) sentence += "; no variant reached the limit";
   return sentence + ".";
 }

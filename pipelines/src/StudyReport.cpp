@@ -129,6 +129,9 @@ StudyReport StudyReport::collect(const Plan& plan, const RunResult* run) {
     if (s.tool != "simulate") continue;
     StudyRow row;
     row.variant = s.variant;
+    row.stage = s.stage;
+    row.bound = s.bound;
+    row.bound_of = s.bound_of;
     const std::vector<std::size_t> chain = chain_of(plan, i);
     for (std::size_t c : chain)
       for (const Param& p : plan.stages[c].params)
@@ -140,30 +143,57 @@ StudyReport StudyReport::collect(const Plan& plan, const RunResult* run) {
     decide_status(row, run ? failure_in_run(*run, chain) : "");
     read_capacity_stress(s, row);
     read_built_volume(plan, chain, row);
-    report.rows_.push_back(std::move(row));
+    if (!row.bound.empty() &&
+        std::find(report.ends_.begin(), report.ends_.end(), row.bound) == report.ends_.end())
+      report.ends_.push_back(row.bound);
+    (row.bound.empty() ? report.rows_ : report.bound_rows_).push_back(std::move(row));
   }
   report.question_ = plan.question;
   report.limits_ = plan.limits;
   return report;
 }
 
-std::vector<std::string> StudyReport::varied_parameters() const {
+std::vector<const StudyRow*> StudyReport::bounds_of(const StudyRow& row) const {
+  std::vector<const StudyRow*> out;
+  if (!row.bound.empty()) return out;
+  for (const std::string& end : ends_)
+    for (const StudyRow& b : bound_rows_)
+      if (b.bound == end && b.bound_of == row.variant && b.stage == row.stage) out.push_back(&b);
+  return out;
+}
+
+std::string StudyReport::label(const StudyRow& row) const {
+  if (!row.variant.empty()) return row.variant;
+  // A stage every run shares is named by the stage when it sits among the runs' rows.
+  return rows_.size() > 1 ? row.stage : "(shared)";
+}
+
+std::vector<std::string> StudyReport::varied_over(const std::vector<const StudyRow*>& rows) const {
   std::vector<std::string> keys;
-  for (const auto& r : rows_)
-    for (const auto& [k, v] : r.parameters)
+  for (const StudyRow* r : rows)
+    for (const auto& [k, v] : r->parameters)
       if (std::find(keys.begin(), keys.end(), k) == keys.end()) keys.push_back(k);
   std::vector<std::string> varied;
   for (const auto& k : keys) {
     std::set<std::string> values;
-    for (const auto& r : rows_) {
+    for (const StudyRow* r : rows) {
       std::string value = "<unset>";
-      for (const auto& [rk, rv] : r.parameters)
+      for (const auto& [rk, rv] : r->parameters)
         if (rk == k) value = rv;
-      values.insert(value);
+      values.insert(r->stage + "|" + value);
     }
-    if (values.size() > 1) varied.push_back(k);
+    // A parameter of one simulate stage only varies when it varies among that stage's rows.
+    std::set<std::string> stages;
+    for (const StudyRow* r : rows) stages.insert(r->stage);
+    if (values.size() > stages.size()) varied.push_back(k);
   }
   return varied;
+}
+
+std::vector<std::string> StudyReport::varied_parameters() const {
+  std::vector<const StudyRow*> rows;
+  for (const StudyRow& r : rows_) rows.push_back(&r);
+  return varied_over(rows);
 }
 
 std::vector<std::string> StudyReport::distinct_parameters(
@@ -239,13 +269,22 @@ std::string where_of(const StudyRow& row) {
 }  // namespace
 
 std::string StudyReport::to_csv() const {
-  const std::vector<std::string> varied = varied_parameters();
-  std::string csv = "variant,status,answer";
+  std::vector<const StudyRow*> all;
+  for (const StudyRow& r : rows_) {
+    all.push_back(&r);
+    for (const StudyRow* b : bounds_of(r)) all.push_back(b);
+  }
+  const std::vector<std::string> varied = varied_over(all);
+  const bool ends = !ends_.empty();
+  std::string csv = std::string("variant,status,answer") + (ends ? ",uncertainty" : "");
   for (const auto& k : varied) csv += "," + csv_cell(k);
   for (const auto& m : study_metrics()) csv += std::string(",") + m.key;
   csv += ",stress_max_where,failure\n";
-  for (const auto& r : rows_) {
-    csv += csv_cell(r.variant) + "," + r.status + "," + answer(r);
+  for (const StudyRow* row : all) {
+    const StudyRow& r = *row;
+    csv += csv_cell(r.variant.empty() && rows_.size() > 1 ? r.stage : r.variant) + "," + r.status +
+           "," + answer(r);
+    if (ends) csv += "," + csv_cell(r.bound);
     for (const auto& k : varied) csv += "," + csv_cell(parameter(r, k));
     for (const auto& [name, value] : metrics(r)) csv += "," + csv_cell(value);
     csv += "," + csv_cell(where_of(r));

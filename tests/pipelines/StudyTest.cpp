@@ -5,6 +5,7 @@
 #include "PipelineTestSupport.h"
 #include "vesica/pipelines/Plan.h"
 #include "vesica/pipelines/StudyAnswer.h"
+#include "vesica/pipelines/StudyPage.h"
 #include "vesica/pipelines/StudyRanking.h"
 #include "vesica/pipelines/StudyReport.h"
 
@@ -293,4 +294,91 @@ TEST(Study, AnswerRanksVariantsByCapacityUnderTheLimit) {
             "No variant approached the 40 cmH2O limit: the highest filling Pdet of any was "
             "12.0 cmH2O, and every pouch held at least 800 ml below it; the ranking follows "
             "Pdet at 500 ml.");
+}
+
+// The uncertainty's ends bound every run: each run is followed by one run per end, which
+// copies only what the end changes and reads the rest from its run (b@label-x), and a
+// stage every run shares is run once per end, not once per run (d@lo).
+TEST(Study, UncertaintyEndsBoundEveryRunAndCopyOnlyWhatTheyChange) {
+  const fs::path dir = scratch_dir("study-uncertainty");
+  const std::string yaml =
+      "stages:\n"
+      "  a: {tool: teststage, output: a.txt, params: {label: A}}\n"
+      "  b: {tool: teststage, input: a.txt, output: b.txt, params: {label: B}}\n"
+      "  c: {tool: teststage, input: b.txt, output: c.txt, params: {label: C}}\n"
+      "  d: {tool: teststage, input: a.txt, output: d.txt, params: {label: D}}\n"
+      "study:\n"
+      "  matrix: {b.label: [x, y]}\n"
+      "  uncertainty:\n"
+      "    lo: {c.label: C-, d.label: D-}\n"
+      "    hi: {c.label: C+, d.label: D+}\n";
+  write_text(dir / "u.yaml", yaml);
+  const auto plan = plan_of(yaml, dir);
+  std::vector<std::string> ids;
+  for (const auto& s : plan.stages) ids.push_back(s.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"a", "b@label-x", "c@label-x", "d", "c@label-x_lo",
+                                           "d@lo", "c@label-x_hi", "d@hi", "b@label-y", "c@label-y",
+                                           "c@label-y_lo", "c@label-y_hi"}));
+  EXPECT_EQ(run_json(dir / "u.yaml", dir, "-j 2").size(), 12u);
+  EXPECT_EQ(slurp(dir / "variants/label-x_lo/c.txt"), "A\nx\nC-\n");
+  EXPECT_EQ(slurp(dir / "variants/label-y_hi/c.txt"), "A\ny\nC+\n");
+  EXPECT_EQ(slurp(dir / "variants/lo/d.txt"), "A\nD-\n");
+  EXPECT_EQ(slurp(dir / "d.txt"), "A\nD\n");
+  EXPECT_EQ(run_json(dir / "u.yaml", dir), Ids{});
+}
+
+// The ranking read again at each end, from hand-written histories (capacities where Pdet
+// first reaches 40 cmH2O, worked out by hand): as given, residual 20 holds 400 ml and
+// residual 40 300 ml; with the soft wall >500 and 450 ml; with the stiff wall 300 and
+// 350 ml, where the order turns over.
+TEST(Study, RankingIsReportedRobustOnlyWhenItHoldsAtEveryEnd) {
+  const fs::path dir = scratch_dir("study-robust");
+  const std::string yaml =
+      "stages:\n"
+      "  sim: {tool: simulate, output: sim, params: {mu_kpa: 5, no_series: true}}\n"
+      "study:\n"
+      "  matrix: {sim.residual_ml: [20, 40]}\n"
+      "  uncertainty: {soft: {sim.mu_kpa: 2}, stiff: {sim.mu_kpa: 9}}\n";
+  const auto plan = plan_of(yaml, dir);
+  const std::string header = "time_s,volume_ml,pdet_cmh2o,flow_ml_s\n";
+  const auto write = [&](const std::string& run, const std::string& rows) {
+    write_text(dir / "variants" / run / "sim/summary.json", R"({"completed": true})");
+    write_text(dir / "variants" / run / "sim/history.csv", header + rows);
+  };
+  write("residual_ml-20", "0,100,0,0\n120,200,10,0\n240,300,20,0\n360,400,40,0\n");
+  write("residual_ml-40", "0,100,0,0\n120,200,20,0\n240,300,40,0\n");
+  write("residual_ml-20_soft", "0,100,0,0\n480,500,20,0\n");
+  write("residual_ml-40_soft", "0,100,0,0\n240,300,20,0\n360,400,30,0\n420,450,40,0\n");
+  write("residual_ml-20_stiff", "0,100,0,0\n120,200,20,0\n240,300,40,0\n");
+  write("residual_ml-40_stiff", "0,100,0,0\n120,200,15,0\n240,300,30,0\n300,350,40,0\n");
+  auto report = vesica::pipelines::StudyReport::collect(plan);
+  ASSERT_EQ(report.rows().size(), 2u);  // the ends are bands of their runs, not rows
+  ASSERT_EQ(report.bounds_of(report.rows()[0]).size(), 2u);
+  EXPECT_EQ(report.uncertainty_ends(), (std::vector<std::string>{"soft", "stiff"}));
+  EXPECT_EQ(vesica::pipelines::robustness_answer(report),
+            "Not robust to the wall's uncertainty: residual_ml-20 ranks first as given, but "
+            "residual_ml-40 at the stiff end.");
+  const std::string csv = report.to_csv();
+  EXPECT_EQ(csv.substr(0, csv.find('\n')).rfind("variant,status,answer,uncertainty,", 0), 0u)
+      << csv;
+  EXPECT_NE(csv.find("\nresidual_ml-20_stiff,ok,,stiff,"), std::string::npos) << csv;
+  // The page: the capacity's interval across the ends under the value, and a band per run
+  // on each filling plot.
+  const std::string page = vesica::pipelines::study_html(report, "robust");
+  EXPECT_NE(page.find("400<br><small class=\"interval\">300&ndash;&gt;500</small>"),
+            std::string::npos);
+  std::size_t areas = 0;
+  for (std::size_t at = page.find("class=\"area\""); at != std::string::npos;
+       at = page.find("class=\"area\"", at + 1))
+    ++areas;
+  EXPECT_EQ(areas, 4u);  // 2 runs x 2 filling plots
+  EXPECT_NE(page.find("id=\"robustness-sentence\""), std::string::npos);
+  EXPECT_NE(page.find("soft: mu_kpa 2; stiff: mu_kpa 9"), std::string::npos);
+
+  // With a stiff residual 20 that still holds more (360 ml), the ranking holds at both ends.
+  write("residual_ml-20_stiff", "0,100,0,0\n120,200,20,0\n240,300,30,0\n300,360,40,0\n");
+  report = vesica::pipelines::StudyReport::collect(plan);
+  EXPECT_EQ(vesica::pipelines::robustness_answer(report),
+            "Robust to the wall's uncertainty: residual_ml-20 ranks first at the soft and stiff "
+            "ends of its ranges too, and the whole order is the same.");
 }

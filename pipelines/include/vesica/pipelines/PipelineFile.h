@@ -80,12 +80,16 @@ struct StudySpec {
 
   std::vector<MatrixAxis> matrix;
   std::vector<Variant> variants;
+  // `study: uncertainty:` named ends of the model's uncertain ranges (`soft`, `stiff`), each
+  // a set of stage.param values like a variant's: every run is also run once per end, its
+  // own values changed by the end's, and the page draws the ends as bands around it.
+  std::vector<Variant> uncertainty;
   std::string question;            // `study: question:` the design question, in words
   std::vector<StudyLimit> limits;  // what a variant must meet to answer it "pass"
   long long max_runs = kDefaultMaxRuns;
   SourcePos max_runs_pos;
   SourcePos pos;
-  bool present() const { return !matrix.empty() || !variants.empty(); }
+  bool present() const { return !matrix.empty() || !variants.empty() || !uncertainty.empty(); }
 };
 
 struct PipelineSpec {

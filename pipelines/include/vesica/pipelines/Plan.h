@@ -18,6 +18,10 @@ struct PlannedStage {
   std::string id;       // "surface", or "surface@variant" for a study copy
   std::string stage;    // the stage's name in the file
   std::string variant;  // empty when shared by every run
+  // A copy at one end of the study's uncertainty: the end, and the run it bounds ("" for
+  // the shared run). Empty otherwise.
+  std::string bound;
+  std::string bound_of;
   std::string tool;
   std::filesystem::path executable;
   std::vector<std::string> argv;    // arguments after the program, exactly as passed

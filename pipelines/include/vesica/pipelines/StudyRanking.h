@@ -21,4 +21,10 @@ std::vector<std::size_t> rank_by_capacity(const StudyReport& report);
 // Empty when no row has a filling curve.
 std::string capacity_answer(const StudyReport& report);
 
+// Whether that answer holds across the wall's uncertainty (the study's `uncertainty:` ends):
+// the rows ranked again with each read at one end; "Robust ...: X ranks first at the soft
+// and stiff ends of its ranges too ..." or "Not robust ...: ... Y at the stiff end".
+// Empty without uncertainty ends.
+std::string robustness_answer(const StudyReport& report);
+
 }  // namespace vesica::pipelines

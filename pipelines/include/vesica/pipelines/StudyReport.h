@@ -22,6 +22,11 @@ namespace vesica::pipelines {
 
 struct StudyRow {
   std::string variant;  // "" for the shared (non-study) run
+  std::string stage;    // the simulate stage's name in the file
+  // A run at an end of the study's uncertainty (PipelineFile.h): the end's name, and the
+  // run it bounds ("" for the shared run). Empty for an ordinary row.
+  std::string bound;
+  std::string bound_of;
   // "stage.param" -> value for the simulate stage and every stage it reads from, in
   // pipeline order (flags read "true").
   std::vector<std::pair<std::string, std::string>> parameters;
@@ -40,9 +45,19 @@ class StudyReport {
   // One row per stage of tool "simulate" in the plan. `run`, when given, is the run that
   // just happened: it names the failures of stages that left no summary.json.
   static StudyReport collect(const Plan& plan, const RunResult* run = nullptr);
+  // The ordinary rows: one per run of the study, in plan order.
   const std::vector<StudyRow>& rows() const { return rows_; }
+  // The rows at the ends of the uncertainty that bound `row`, in the study file's order of
+  // the ends; empty without `uncertainty:`.
+  std::vector<const StudyRow*> bounds_of(const StudyRow& row) const;
+  // The names of the uncertainty's ends, in the study file's order.
+  const std::vector<std::string>& uncertainty_ends() const { return ends_; }
+  // A row's name on the page and in messages: its run, or its stage when shared.
+  std::string label(const StudyRow& row) const;
 
-  // study.csv: variant, status, answer (pass | fail | empty), the parameters that differ
+  // study.csv: variant, status, answer (pass | fail | empty), with uncertainty ends the
+  // end a row is at (its `uncertainty` column, empty for an ordinary row, each ordinary row
+  // followed by its ends' rows), the parameters that differ
   // between runs, then the read-outs of StudyMetrics.h: built_volume_ml, pdet_at_300ml_cmh2o,
   // pdet_at_500ml_cmh2o, max_pdet_cmh2o, compliance_ml_per_cmh2o, capacity_at_40cmh2o_ml
   // (">V" when Pdet stayed below 40 up to the largest volume V), qmax_ml_s, voided_ml, pvr_ml,
@@ -67,7 +82,11 @@ class StudyReport {
   std::string answer(const StudyRow& row) const;
 
  private:
+  std::vector<std::string> varied_over(const std::vector<const StudyRow*>& rows) const;
+
   std::vector<StudyRow> rows_;
+  std::vector<StudyRow> bound_rows_;
+  std::vector<std::string> ends_;
   std::string question_;
   std::vector<StudyLimit> limits_;
 };
