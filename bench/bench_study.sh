@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Times the neobladder what-if study (pipelines/neobladder-whatif.yaml: 12 variants, ileum
-# length x folding, each surface -> mesh -> simulate) end to end with `vesica run -j 2
+# length x folding, each surface -> mesh -> simulate, the MR-derived pouch beside them, and
+# each pouch filled again at both ends of the wall's uncertainty) end to end with `vesica run -j 2
 # --keep-going` in a fresh workdir, then (when every variant completed) a second, no-op
 # run. Targets (issue 34): < 600 s end to end on 2 cores, the no-op rerun < 1 s. Prints one
 # JSON object: total and no-op seconds, the seconds of each stage copy and their sum per
@@ -9,7 +10,7 @@ set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 here=$(cd "$(dirname "$0")/.." && pwd)
 vesica="$build/bin/vesica"
-for tool in vesica vesica-surface vesica-mesh vesica-simulate; do
+for tool in vesica vesica-phantom vesica-segment vesica-surface vesica-mesh vesica-simulate; do
   [ -x "$build/bin/$tool" ] || { echo "{\"error\": \"$tool not built\"}"; exit 0; }
 done
 work=$(mktemp -d)
