@@ -82,7 +82,7 @@ std::vector<PhysicalParameter> wall_parameters() {
                       NumberRange::at_least(0.1).at_most(100).because(
                           "the calibration's range; a stiffer wall barely moves under cystometric "
                           "pressures"),
-                      {{"bladder", {1e3}},
+                      {{"bladder", {0.6e3}},
                        {"neobladder", {2e3}},
                        {"neo-hookean", {5e3}},
                        {"maxwell", {5e3}},
@@ -100,13 +100,13 @@ std::vector<PhysicalParameter> wall_parameters() {
                      "incompressible for every filling: K no longer changes Pdet"));
   w.push_back(
       fitted(material("k1", "k1_kpa", "kPa", "Pa", kPa, NumberRange::greater_than(0).at_most(1000),
-                      {{"bladder", {60.0}}, {"neobladder", {200.0}}, {"fibers", {10e3}}},
+                      {{"bladder", {125.0}}, {"neobladder", {200.0}}, {"fibers", {10e3}}},
                       "fiber stiffness k1"),
              1e-5, 100.0,
              "from a fiber that never stiffens within a cystometry (10 mPa) to one that holds any "
              "bladder near its start volume (100 kPa)"));
   w.push_back(fitted(material("k2", "k2", "-", "-", 1.0, NumberRange::greater_than(0).at_most(100),
-                              {{"bladder", {0.045}}, {"neobladder", {0.045}}, {"fibers", {1.0}}},
+                              {{"bladder", {0.02}}, {"neobladder", {0.045}}, {"fibers", {1.0}}},
                               "fiber exponent k2"),
                      1e-2, 100.0,
                      "below 0.01 the fiber term is linear in I4 over any cystometry and k2 "
@@ -158,7 +158,7 @@ std::vector<PhysicalParameter> muscle_parameters() {
                        bladder_or(0.3, 0.25),
                        "Hill's a/T0: curvature of the detrusor's force-velocity relation"));
   m.push_back(material("hill_vmax", "hill_vmax_per_s", "1/s", "1/s", 1.0,
-                       NumberRange::at_least(1e-3).at_most(10), bladder_or(0.073, 0.1),
+                       NumberRange::at_least(1e-3).at_most(10), bladder_or(0.25, 0.1),
                        "the detrusor's unloaded shortening rate"));
   return m;
 }

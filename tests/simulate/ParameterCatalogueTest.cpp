@@ -82,11 +82,11 @@ TEST(ParameterCatalogue, EachParameterHasOneNameOneKeyAndAFitRangeInsideItsRange
 // docs/simulate.md "Default walls", written out by hand: the bladder and the neobladder.
 TEST(ParameterCatalogue, TheDefaultWallsAreTheDocumentedOnes) {
   const MaterialCard b = resolve_material({"bladder", {}});
-  EXPECT_EQ(b.mu_pa, 1e3);
-  EXPECT_EQ(b.k_pa, 1e6);  // K = 1000 mu
+  EXPECT_EQ(b.mu_pa, 0.6e3);
+  EXPECT_EQ(b.k_pa, 0.6e6);  // K = 1000 mu
   ASSERT_TRUE(b.fibers);
-  EXPECT_EQ(b.k1_pa, 60.0);
-  EXPECT_EQ(b.k2, 0.045);
+  EXPECT_EQ(b.k1_pa, 125.0);
+  EXPECT_EQ(b.k2, 0.02);
   ASSERT_EQ(b.branches.size(), 1u);
   EXPECT_EQ(b.branches[0].beta, 0.2);
   EXPECT_EQ(b.branches[0].tau_s, 10.0);
@@ -95,7 +95,7 @@ TEST(ParameterCatalogue, TheDefaultWallsAreTheDocumentedOnes) {
   EXPECT_EQ(b.optimal_stretch, 3.0);
   EXPECT_EQ(b.stretch_width, 1.5);
   EXPECT_EQ(b.hill_a, 0.3);
-  EXPECT_EQ(b.hill_vmax_per_s, 0.073);
+  EXPECT_EQ(b.hill_vmax_per_s, 0.25);
   const MaterialCard n = resolve_material({"neobladder", {}});
   EXPECT_EQ(n.mu_pa, 2e3);  // docs/simulate.md "Default walls": the neobladder column
   EXPECT_EQ(n.k1_pa, 200.0);

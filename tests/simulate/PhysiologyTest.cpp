@@ -3,8 +3,9 @@
 // 2300 --outlet auto --outlet-radius-mm 12, then vesica-mesh: 2,474 triangles). Every run
 // is vesica-simulate with its defaults and one or two options:
 //  - filling 50 → 350 ml at 50 ml/min: Pdet starts within 1 cmH2O of the shared
-//    recording's first row, never falls from 100 ml to capacity, and ends inside the
-//    normal end-filling band, 6–10 cmH2O (docs/physics.md §7.3);
+//    recording's first row, never falls from 100 ml to capacity, ends within 1 cmH2O of its
+//    last filling row, fits its filling rows within 1 cmH2O RMSE, and filled on to 550 ml
+//    stays compliant (at least 20 ml/cmH2O over every 100 ml, at most 15 cmH2O at 500 ml);
 //  - the default bladder wall on the CT bladder, and the default neobladder wall on an
 //    ileal pouch built at 150 ml and on the CT bladder built at 150 ml (stress-free as
 //    built, as the neobladder study has it), fill to 600 ml without a failed step (the
@@ -15,7 +16,8 @@
 //    weak, normal up to about 75; Tan et al., Neurourol Urodyn 2004; Griffiths, Scand J
 //    Urol Nephrol Suppl 2004;215:93–100; men's normal BCI, 100–150, is higher);
 //  - detrusor voiding with the default contractility empties 350 ml with Qmax 15–30 ml/s
-//    and PVR < 30 ml, labelled "detrusor" in the summary and history.csv; a weaker
+//    and PVR < 30 ml, rising to Qmax 20–50 % of the way through the flow time with Qave
+//    0.5–0.75 of Qmax, labelled "detrusor" in the summary and history.csv; a weaker
 //    detrusor (75 %, 50 % of the contractility) empties less and flows slower, step by step;
 //  - the lumped model (level 0) matches the 3-D wall (level 1) on a sphere.
 #include <gtest/gtest.h>
@@ -30,6 +32,7 @@
 #include "HistoryCsv.h"
 #include "ShellCommand.h"
 #include "TestData.h"
+#include "vesica/compare/analysis/RecordingAnalysis.h"
 #include "vesica/core/Units.h"
 #include "vesica/io/RecordingReader.h"
 #include "vesica/simulate/protocol/Cystometry.h"
@@ -117,6 +120,41 @@ double rounding_of(const std::string& text) {
   return 0.5 * std::pow(10.0, dot == std::string::npos ? 0.0 : -double(text.size() - dot - 1));
 }
 
+// The uroflow of a run as the ICS defines it (docs/physics.md §7.3), read off its history
+// from the end of filling: flow time is the total length of the sample intervals with flow
+// at either end, time to Qmax counts from the start of the first of them, and Qave is the
+// voided volume over the flow time.
+struct Uroflow {
+  double qmax = 0.0, time_to_qmax_s = 0.0, flow_time_s = 0.0, qave = 0.0;
+};
+Uroflow uroflow(const std::vector<HistoryCsvRow>& rows) {
+  Uroflow u;
+  double start = NAN;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const HistoryCsvRow &a = rows[i - 1], &b = rows[i];
+    if (a.flow <= 0.0 && b.flow <= 0.0) continue;
+    if (std::isnan(start)) start = a.t;
+    u.flow_time_s += b.t - a.t;
+    if (b.flow > u.qmax) {
+      u.qmax = b.flow;
+      u.time_to_qmax_s = b.t - start;
+    }
+  }
+  if (u.flow_time_s > 0.0) u.qave = rows.back().voided / u.flow_time_s;
+  return u;
+}
+
+// Pdet of the filling rows (nothing voided yet) at `ml`, linear between rows.
+double filling_pdet_at(const std::vector<HistoryCsvRow>& rows, double ml) {
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const HistoryCsvRow &a = rows[i - 1], &b = rows[i];
+    if (b.voided > 0.0) break;
+    if (a.volume <= ml && b.volume >= ml && b.volume > a.volume)
+      return a.pdet + (ml - a.volume) / (b.volume - a.volume) * (b.pdet - a.pdet);
+  }
+  return NAN;
+}
+
 }  // namespace
 
 // What the README says the default model does on the real CT bladder (its status table) is
@@ -159,10 +197,12 @@ TEST(Physiology, DefaultWallFillsTheCtBladderLikeTheRecording) {
       EXPECT_GE(filling[i].pdet, filling[i - 1].pdet) << "falls at " << filling[i].volume << " ml";
     }
   }
+  // The end of filling: the recording's last unflagged filling row (5 cmH2O at 349 ml). No
+  // published normal band of end-filling Pdet is known to vesica (docs/physics.md §7.3).
   const double end = r.summary["pdet_at_capacity_cmh2o"].get<double>();
+  const double last_row = vesica::compare::analyse(measured).filling.y.back();
   EXPECT_NEAR(r.summary["capacity_ml"].get<double>(), 350.0, 1e-6);
-  EXPECT_GE(end, 6.0);
-  EXPECT_LE(end, 10.0);
+  EXPECT_NEAR(end, last_row, 1.0) << "the recording ends filling at " << last_row;
 }
 
 TEST(Physiology, DefaultDetrusorVoidsTheCtBladderWithNormalFlowAndResidual) {
@@ -190,6 +230,86 @@ TEST(Physiology, DefaultDetrusorVoidsTheCtBladderWithNormalFlowAndResidual) {
   EXPECT_GT(peak, first);
   EXPECT_LT(peak, last);
   EXPECT_LT(r.rows[last].flow, 0.1 * qmax);
+}
+
+// A woman's uroflow rises to its maximum part of the way through and tails off: normal women
+// void 180-340 ml in about 26-29 s, reaching Qmax 20-24 ml/s after 6-8 s, Qave about half of
+// Qmax (docs/physics.md §12, "A void that rises"). The default void of 350 ml on the CT
+// bladder, read as the ICS reads a flow curve: time to Qmax 20-50 % of the flow time, Qave
+// 0.5-0.75 of Qmax, Qmax 15-30 ml/s, PVR below 30 ml. The urethra opens before the
+// detrusor's pressure peaks (the sphincter gives way to the rising contraction).
+TEST(Physiology, DefaultVoidRisesToItsMaximumPartWayThroughTheFlow) {
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const SimulateRun& r = default_run();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Uroflow u = uroflow(r.rows);
+  const double pvr = r.summary["pvr_ml"].get<double>();
+  std::cout << "[ physiology ] default void: Qmax " << u.qmax << " ml/s after " << u.time_to_qmax_s
+            << " s of a flow time of " << u.flow_time_s << " s, Qave " << u.qave << " ml/s, PVR "
+            << pvr << " ml" << std::endl;
+  ASSERT_GT(u.flow_time_s, 0.0);
+  EXPECT_GE(u.time_to_qmax_s / u.flow_time_s, 0.2);
+  EXPECT_LE(u.time_to_qmax_s / u.flow_time_s, 0.5);
+  EXPECT_GE(u.qave / u.qmax, 0.5);
+  EXPECT_LE(u.qave / u.qmax, 0.75);
+  EXPECT_GE(u.qmax, 15.0);
+  EXPECT_LE(u.qmax, 30.0);
+  EXPECT_LT(pvr, 30.0);
+  double t_open = NAN, t_peak = 0.0, peak = -1e300;
+  for (const HistoryCsvRow& row : r.rows) {
+    if (row.t <= 360.0) continue;  // filling ends at 360 s (50 -> 350 ml at 50 ml/min)
+    if (std::isnan(t_open) && row.flow > 0.0) t_open = row.t;
+    if (row.pdet > peak) {
+      peak = row.pdet;
+      t_peak = row.t;
+    }
+  }
+  EXPECT_LT(t_open, t_peak) << "the urethra opened at " << t_open << " s, Pdet peaked at "
+                            << t_peak;
+}
+
+// A normal bladder stores 400-600 ml at low pressure (docs/physics.md §7.3, "Late filling"):
+// compliance of at least 20 ml/cmH2O (Ghoniem's normal) over every 100 ml up to 500 ml, and
+// a Pdet of at most 15 cmH2O at 500 ml. The default wall filled on to 550 ml.
+TEST(Physiology, DefaultWallStaysCompliantTo500Ml) {
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const SimulateRun r = simulate(ct_wall(), "bladder-550", "--capacity-ml 550 --no-void");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (double v = 50.0; v + 100.0 <= 500.0 + 1e-9; v += 50.0) {
+    const double rise = filling_pdet_at(r.rows, v + 100.0) - filling_pdet_at(r.rows, v);
+    std::cout << "[ physiology ] compliance " << v << "-" << v + 100.0 << " ml: " << 100.0 / rise
+              << " ml/cmH2O" << std::endl;
+    EXPECT_LE(rise, 100.0 / 20.0) << v << " to " << v + 100.0 << " ml";
+  }
+  const double at500 = filling_pdet_at(r.rows, 500.0);
+  std::cout << "[ physiology ] Pdet at 350/400/450/500 ml: " << filling_pdet_at(r.rows, 350.0)
+            << " " << filling_pdet_at(r.rows, 400.0) << " " << filling_pdet_at(r.rows, 450.0) << " "
+            << at500 << " cmH2O" << std::endl;
+  EXPECT_LE(at500, 15.0);
+}
+
+// The default wall was fitted to the shared recording's filling (docs/simulate.md, "Default
+// walls"); its default run still meets it within 1 cmH2O RMSE at the recording's unflagged
+// filling rows from the 50 ml start on.
+TEST(Physiology, DefaultWallFillsLikeTheRecordingWithinOneCmH2O) {
+  VESICA_REQUIRE_SHARED(recording, "data/urodynamics/normal-female-34y.csv");
+  VESICA_REQUIRE_SHARED(label, "data/ct/abdomen-3mm/bladder-reference.nii.gz");
+  const SimulateRun& r = default_run();
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const vesica::compare::RecordingAnalysis measured =
+      vesica::compare::analyse(vesica::io::read_recording(recording));
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < measured.filling.x.size(); ++i) {
+    if (measured.filling.x[i] < 50.0 - 1e-9) continue;
+    const double model = filling_pdet_at(r.rows, std::min(measured.filling.x[i], 350.0));
+    sum += std::pow(model - measured.filling.y[i], 2);
+    ++n;
+  }
+  ASSERT_GE(n, 10);
+  const double rmse = std::sqrt(sum / n);
+  std::cout << "[ physiology ] filling RMSE " << rmse << " cmH2O at " << n << " rows" << std::endl;
+  EXPECT_LE(rmse, 1.0);
 }
 
 // Issue 24: the recording voids 350 of 349 ml, so the model must empty below the wall's

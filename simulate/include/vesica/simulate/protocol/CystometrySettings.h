@@ -40,7 +40,7 @@ struct ProtocolSettings {
   // detrusor's. Empty: the resting pabd_cmh2o.
   PressureTrace voiding_pabd;
   double activation_delay_s = 0.0;  // latency from the end of filling to the drive's onset
-  double activation_onset_s = 2.0;
+  double activation_onset_s = 4.0;  // docs/physics.md §12: a detrusor recruited over seconds
   double activation_plateau_s = 60.0;
   double activation_fade_s = 5.0;
   // The urethra (docs/physics.md §5): opens at p_open, passes Q with
