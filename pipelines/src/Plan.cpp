@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -111,8 +112,9 @@ class Planner {
       const fs::path abs = (base / e.path).lexically_normal();
       if (const std::string why = unholdable(abs); !why.empty())
         d_.add(e.pos, "external input '" + e.name + "' is " + why);
-      else if (!fs::exists(abs))
-        d_.add(e.pos, "external input '" + e.name + "' not found: " + abs.string());
+      else if (std::error_code ec; !fs::exists(abs, ec))
+        d_.add(e.pos, "external input '" + e.name + "' not found: " + abs.string() +
+                          (ec ? " (" + ec.message() + ")" : ""));
       else if (is_special_file(abs))
         d_.add(e.pos, "external input '" + e.name + "' is a named pipe, device or socket, " +
                           "not a file a stage can read: " + abs.string());
@@ -201,8 +203,15 @@ class Planner {
     const auto it = known_tools_.find(tool);
     if (it != known_tools_.end()) return it->second;
     const auto& builtin = builtin_tools();
+    // A tool is a program beside `vesica`: a plain name (no path, no dots), and a file name
+    // the system can hold (a longer one makes the lookup itself fail).
+    const bool plain = !tool.empty() && tool.size() <= 64 &&
+                       std::all_of(tool.begin(), tool.end(), [](unsigned char c) {
+                         return std::isalnum(c) || c == '_' || c == '-';
+                       });
+    std::error_code ec;
     const bool known = std::count(builtin.begin(), builtin.end(), tool) > 0 ||
-                       fs::exists(options_.bin_dir / ("vesica-" + tool));
+                       (plain && fs::exists(options_.bin_dir / ("vesica-" + tool), ec));
     return known_tools_[tool] = known;
   }
 
@@ -257,7 +266,8 @@ class Planner {
     if (producer >= 0) {
       if (std::count(b.deps.begin(), b.deps.end(), producer) == 0)
         b.deps.push_back(static_cast<std::size_t>(producer));
-    } else if (!external && !fs::exists((plan_.workdir / path).lexically_normal())) {
+    } else if (std::error_code ec;
+               !external && !fs::exists((plan_.workdir / path).lexically_normal(), ec)) {
       d_.add(pos, "input '" + path + "' of stage '" + b.spec->name +
                       "' is not written by any stage and does not exist (looked in " +
                       plan_.workdir.string() + ")");
