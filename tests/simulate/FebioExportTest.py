@@ -171,26 +171,26 @@ class FebioExport(unittest.TestCase):
                          [2000.0, 0.0, 300000.0])  # c1 = mu/2 (Pa)
 
     def test_the_default_bladder_exports_its_own_values(self):
-        # docs/physics.md 2.7: mu 1 kPa, K = 1000 mu, k1 60 Pa, k2 0.045, one branch
+        # docs/physics.md 2.7: mu 0.6 kPa, K = 1000 mu, k1 125 Pa, k2 0.02, one branch
         # beta 0.2; the verification's steps respond instantaneously, the passive stress
         # times 1 + 0.2, and FEBio's uncoupled fibers take K = 1e4 mu.
         message = self.refused("--protocol", "pressure-steps", "--beta-vol", "0")
-        self.assertIn("--export-feb: k1 = 60 Pa", message)
+        self.assertIn("--export-feb: k1 = 125 Pa", message)
         self.assertIn("--febio-approximate", message)
         root, result = self.export("bladder", "--protocol", "pressure-steps", "--beta-vol", "0",
                                    "--steps", "2", "--febio-approximate")
-        self.assertIn("--export-feb: k1 = 60 Pa", result.stderr)
+        self.assertIn("--export-feb: k1 = 125 Pa", result.stderr)
         mixture = root.find("Material/material")
         self.assertEqual(mixture.get("type"), "uncoupled solid mixture")
-        self.assertAlmostEqual(value(mixture, "k"), 1.2 * 1e4 * 1000.0)
+        self.assertAlmostEqual(value(mixture, "k"), 1.2 * 1e4 * 600.0)
         matrix, *fibers = mixture.findall("solid")
         self.assertEqual(matrix.get("type"), "Mooney-Rivlin")
-        self.assertAlmostEqual(value(matrix, "c1"), 1.2 * 1000.0 / 2)
+        self.assertAlmostEqual(value(matrix, "c1"), 1.2 * 600.0 / 2)
         self.assertEqual(len(fibers), 2)
         for fiber, name in zip(fibers, ("fiber1", "fiber2")):
             self.assertEqual(fiber.get("type"), "fiber-exp-pow-uncoupled")
-            self.assertAlmostEqual(value(fiber, "ksi"), 1.2 * 60.0)
-            self.assertAlmostEqual(value(fiber, "alpha"), 0.045)
+            self.assertAlmostEqual(value(fiber, "ksi"), 1.2 * 125.0)
+            self.assertAlmostEqual(value(fiber, "alpha"), 0.02)
             self.assertEqual(value(fiber, "beta"), 2.0)
             self.assertEqual((fiber.find("fiber").get("type"), fiber.find("fiber").text),
                              ("map", name))
