@@ -19,7 +19,7 @@ shared="${VESICA_SHARED_DIR:-$here/../shared}"
 # The detrusor-voided default wall: its fibers from filling first, then its contractility,
 # the drive's latency, the sphincter's recovery and the urethra's closing pressure from voiding
 # (docs/compare.md).
-calibrate="${VESICA_BENCH_CALIBRATE:-k1,k2,contractility,activation_delay,urethra_recovery_half,p_close}"
+calibrate="${VESICA_BENCH_CALIBRATE:-mu,k1,activation_delay,urethra_recovery_half,p_close,hill_vmax}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 

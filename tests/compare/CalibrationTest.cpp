@@ -199,10 +199,14 @@ TEST(Calibration, VoidingParametersWithoutAVoidingInTheRecordingAreRefused) {
 }
 
 // Acceptance of issue 24 on the README's 2,474-triangle CT wall, for the detrusor-voided
-// default bladder wall: its fibers (k1, k2) from the filling first, then its contractility,
-// the drive's latency, the sphincter's recovery and the urethra's closing pressure from the
-// voiding (6 parameters), each searched on simulate's level 0 and refined by output space
-// mapping with a few runs of the wall. Targets: filling RMSE <= 1 cmH2O and below the
+// default bladder wall: its matrix and fibers (mu, k1) from the filling first, then the
+// detrusor's shortening rate, the drive's latency, the sphincter's recovery and the
+// urethra's closing pressure from the voiding (6 parameters), each searched on simulate's
+// level 0 and refined by output space mapping with a few runs of the wall. The default
+// wall's k2 is set by its compliance beyond 350 ml, which this recording (to 349 ml) does
+// not reach, so it is not fitted; her 39 s of flow asks a slower shortening than the
+// population's default, and with it fitted the contractility is not identified apart from
+// it, so that stays at its default. Targets: filling RMSE <= 1 cmH2O and below the
 // straight line; Qmax within 10 % of 17 ml/s; flow time within 20 % of the measured 39 s;
 // voided volume within 5 % of 350 ml; PdetQmax within 3 cmH2O of 5; Q(t) correlation >= 0.9
 // after aligning the onsets. Where the wall cannot take a late voiding step (a few
@@ -221,8 +225,8 @@ TEST(Calibration, TheWholeRecordingMeetsTheAcceptanceTargetsOnTheCtWall) {
   ASSERT_EQ(m.exit_code, 0) << m.output;
   const auto c = calibrate("--measured " + compare_data("normal-female-34y.csv").string() +
                                " --mesh " + (dir / "ct.vtu").string() +
-                               " --calibrate k1,k2,contractility,activation_delay,"
-                               "urethra_recovery_half,p_close",
+                               " --calibrate mu,k1,activation_delay,"
+                               "urethra_recovery_half,p_close,hill_vmax",
                            dir);
   ASSERT_FALSE(c.is_null());
   std::cout << c["status"] << "\n";
