@@ -11,6 +11,7 @@ replaced. Every case of CASES gets a row: its figures when its JSON is there, el
 megabytes (MB), millilitres (ml), cmH2O, ml/s, as in the benchmarks' JSON keys.
 """
 import json
+import math
 import os
 import sys
 import tempfile
@@ -216,6 +217,21 @@ def study(d):
             join(f"{ok} of {len(variants)} variants ok", f"no-op rerun {seconds(d.get('noop_run_s'))}"))
 
 
+def ct_void(d):
+    meshes = [m for m in d.get("meshes") or [] if m.get("completed")]
+    sizes = ", ".join(f"{m.get('triangles') or m.get('target_triangles'):,}" for m in meshes)
+    exponent = None
+    if len(meshes) > 1 and meshes[0].get("triangles") and meshes[-1].get("triangles"):
+        exponent = math.log(meshes[-1]["seconds"] / meshes[0]["seconds"]) / math.log(
+            meshes[-1]["triangles"] / meshes[0]["triangles"])
+    return (f"{sizes} triangles, the largest timed", meshes[-1]["seconds"] if meshes else None,
+            None,
+            join("no hand-over at any size" if d.get("no_hand_over_anywhere") else "hand-overs",
+                 f"PVR spread {num(d.get('pvr_spread_ml'))} ml",
+                 f"Qmax spread {num(d.get('qmax_spread_percent'))} %",
+                 f"time ~ n^{num(exponent, 2)}" if exponent else None))
+
+
 def verification(runs):
     by_law = {("ln J" if r.get("beta_vol") == 0 else f"Ogden β = {num(r.get('beta_vol'))}"): r
               for r in runs}
@@ -320,6 +336,7 @@ CASES = [
     ("pipelines", None, "vesica run: no-op of a fresh 6-stage chain", pipelines_noop, True),
     ("pipelines", "demo", "vesica run: no-op of the finished demo", pipelines_demo, False),
     ("study", None, "vesica run: neobladder what-if study from nothing", study, True),
+    ("ct_void", None, "simulate: the default cystometry on the CT bladder at five mesh sizes", ct_void, True),
     ("safety", None, "safety: hostile inputs refused (slowest refusal)", safety, True),
     ("febio", "balloon", "FEBio 4 on the exported thin balloon (8 pressure steps, OMP 2, niced)", febio, False),
     ("febio", "default_wall", "FEBio 4 on the exported default wall's filling 50 → 350 ml (OMP 2, niced)", febio, False),
