@@ -28,6 +28,14 @@ if grep -q '"ok": true' "$work/run.json"; then
     > "$work/noop.json" || true
 fi
 t2=$(date +%s%N)
+# The page as a surgeon opens it: headless Chromium at 1280 px (the DOM after the page's own
+# checks ran), when Chromium is there.
+if command -v chromium > /dev/null 2>&1 && [ -f "$work/study.html" ]; then
+  timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-background-networking \
+    --disable-component-update --no-first-run --disable-dev-shm-usage --hide-scrollbars \
+    --virtual-time-budget=3000 --user-data-dir="$work/profile" --window-size=1280,900 \
+    --dump-dom "file://$work/study.html" > "$work/page.html" 2> /dev/null || true
+fi
 
 python3 - "$work" "$t0" "$t1" "$t2" <<'PY'
 import csv, json, sys
@@ -39,6 +47,17 @@ for s in run["stages"]:
     name = s["id"].split("@")[0]
     per_stage[name] = round(per_stage.get(name, 0.0) + s["seconds"], 2)
     per_copy[s["id"]] = {"seconds": round(s["seconds"], 2), "action": s["action"]}
+page = None
+try:
+    import re
+    dom = open(f"{work}/page.html").read()
+    body = lambda name: (re.search(r'<body[^>]*\sdata-' + name + r'="([^"]*)"', dom) or [None, None])[1]
+    page = {"window_px": 1280, "overflowing": body("overflowing"), "table_right_px": body("table-right"),
+            "answer": "id=\"answer-sentence\"" in dom, "robustness": "id=\"robustness-sentence\"" in dom,
+            "ranked_rows": dom.count('<td class="rank">'), "bands": dom.count('class="area"'),
+            "pictures": dom.count('class="pouch"')}
+except OSError:
+    pass
 variants = {}
 with open(f"{work}/study.csv") as f:
     for row in csv.DictReader(f):
@@ -49,6 +68,6 @@ print(json.dumps({
     "ok": run["ok"], "stages_ran": len(run["ran"]), "stages": len(run["stages"]),
     "stage_seconds_sum": per_stage, "stage_copies": per_copy,
     "noop_run_s": round((t2 - t1) / 1e9, 3) if noop["ran"] is not None else None,
-    "noop_ran": noop["ran"],
+    "noop_ran": noop["ran"], "page": page,
     "variants": variants}, indent=1))
 PY
