@@ -377,7 +377,17 @@ void NavierStokesCavity::finish_frames() {
 }
 
 std::vector<std::string> NavierStokesCavity::take_notes() {
-  return std::exchange(notes_, {});
+  std::vector<std::string> notes = std::exchange(notes_, {});
+  if (collapse_)
+    for (std::string& n : collapse_->take_notes()) notes.push_back(std::move(n));
+  return notes;
+}
+
+// The void ends the same way whatever level the run started at: a level-1 void that
+// cannot take a step goes on as its sphere-equivalent (docs/simulate.md, "The tail of
+// voiding"), and so does level 1 carrying on from level 2.
+bool NavierStokesCavity::hand_over_voiding(const std::string& failure, double time_s) {
+  return collapse_ && collapse_->hand_over_voiding(failure, time_s);
 }
 
 nlohmann::json NavierStokesCavity::statistics() const {
@@ -398,6 +408,7 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
   s["jet"] = jet_summary(jet_);
+  if (collapse_) collapse_->add_summary(s);  // its tail, if level 1 handed one over
   s["level1_from"] = collapse_ ? nlohmann::json{{"time_s", collapse_time_s_},
                                                 {"volume_ml", units::ml_from_m3(collapse_volume_)}}
                                : nlohmann::json(nullptr);

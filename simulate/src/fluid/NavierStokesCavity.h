@@ -52,6 +52,9 @@ class NavierStokesCavity final : public CavityModel {
   void start_clock() override;
   StepResult try_step(const StepRequest& step) override;
   std::string voiding_end_note(const std::string& failure) const override;
+  // Once level 1 carries the void (below the stress-free volume), the same hand-over a
+  // level-1 run makes: its tail to the sphere-equivalent.
+  bool hand_over_voiding(const std::string& failure, double time_s) override;
   std::vector<LevelHandOver> hand_overs() const override;
 
   double volume() const override;
