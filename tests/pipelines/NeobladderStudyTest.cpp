@@ -24,26 +24,6 @@ namespace {
 
 using Row = std::map<std::string, std::string>;
 
-// study.csv as variant -> column -> cell (no cell of this study holds a comma).
-std::map<std::string, Row> read_study_csv(const fs::path& csv) {
-  std::istringstream in(slurp(csv));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::istringstream hs(line);
-  for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
-  std::map<std::string, Row> rows;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    Row row;
-    std::size_t i = 0;
-    for (std::string cell; i < header.size() && std::getline(ls, cell, ',');)
-      row[header[i++]] = cell;
-    rows[row["variant"]] = row;
-  }
-  return rows;
-}
-
 // A read-out as a number; a lower bound (">800") counts as its bound.
 double number(const Row& row, const std::string& column) {
   const auto it = row.find(column);
@@ -70,7 +50,7 @@ TEST(NeobladderStudy, TheSphereHoldsMoreThanTheTubeAtEveryEndAndThePageSaysSo) {
                               dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
 
-  const auto rows = read_study_csv(dir / "work" / "study.csv");
+  const StudyTable rows = read_study_table(dir / "work" / "study.csv");
   const std::string tube = "shape-tubular_ileum_length_cm-40",
                     sphere = "shape-sphere_ileum_length_cm-40";
   for (const std::string& run_name : {tube, sphere, std::string("mr_pouch")})

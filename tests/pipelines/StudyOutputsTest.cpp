@@ -66,26 +66,6 @@ std::string study_yaml(const std::string& stiff_mu_kpa) {
          "    oblong: {surface.elongation: 1.3}\n";
 }
 
-// study.csv as variant -> column -> cell.
-std::map<std::string, std::map<std::string, std::string>> read_table(const fs::path& csv) {
-  std::istringstream in(slurp(csv));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::stringstream hs(line);
-  for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
-  std::map<std::string, std::map<std::string, std::string>> table;
-  while (std::getline(in, line)) {
-    std::stringstream ls(line);
-    std::map<std::string, std::string> row;
-    std::size_t i = 0;
-    for (std::string cell; i < header.size() && std::getline(ls, cell, ',');)
-      row[header[i++]] = cell;
-    table[row["variant"]] = row;
-  }
-  return table;
-}
-
 // σ1 and area of every wall triangle of a series frame (region 2, the outlet cap, left out),
 // and the frame's volume field.
 struct WallSigma1 {
@@ -152,7 +132,7 @@ TEST_F(StudyOutputs, TableHasEveryVariantAndItsReadOuts) {
   // shared surface + mesh; soft/stiff: simulate; large/oblong: surface, mesh, simulate.
   EXPECT_EQ(first_run_->size(), 10u) << ::testing::PrintToString(*first_run_);
   EXPECT_EQ(exit_code_, 0) << slurp(out() / "study.csv");
-  const auto table = read_table(out() / "study.csv");
+  const auto table = read_study_table(out() / "study.csv");
   ASSERT_EQ(table.size(), 4u) << slurp(out() / "study.csv");
   for (const auto& [variant, row] : table) {
     EXPECT_EQ(row.at("status"), "ok") << variant << ": " << row.at("failure");
@@ -190,7 +170,7 @@ TEST_F(StudyOutputs, StifferWallHasHigherPressureAtEqualVolume) {
 }
 
 TEST_F(StudyOutputs, LargerInitialCapacityHasLowerPressureAt500ml) {
-  const auto table = read_table(out() / "study.csv");
+  const auto table = read_study_table(out() / "study.csv");
   const double built250 = number(table.at("soft"), "pdet_at_500ml_cmh2o");
   const double built350 = number(table.at("large"), "pdet_at_500ml_cmh2o");
   std::printf("[ monotonic ] Pdet at 500 ml: built at 250 ml %.3f, at 350 ml %.3f cmH2O\n",
@@ -233,7 +213,7 @@ TEST_F(StudyOutputs, StressAtCapacityIsTheCapacityFramesAndNearTheSpheres) {
     }
   }
   const double max = w.sigma1[order.back()];
-  const auto row = read_table(out() / "study.csv").at("soft");
+  const auto row = read_study_table(out() / "study.csv").at("soft");
   EXPECT_NEAR(number(row, "stress_max_at_capacity_kpa"), max, 1e-5 * max);
   EXPECT_NEAR(number(row, "stress_p95_at_capacity_kpa"), p95, 1e-5 * p95);
   const double lambda = std::cbrt(500.0 / 250.0);
@@ -289,12 +269,12 @@ TEST_F(StudyOutputs, SecondRunDoesNothingAndAChangedVariantRerunsOnlyItsStages) 
   EXPECT_EQ(run_json(*dir_ / "study.yaml", *dir_, "-j 2"), Ids{});
   EXPECT_EQ(fs::last_write_time(out() / "study.csv"), csv_time);  // not rewritten
 
-  const auto first = read_table(out() / "study.csv");
+  const auto first = read_study_table(out() / "study.csv");
   const double soft = number(first.at("soft"), "pdet_at_300ml_cmh2o");
   const double mu2 = number(first.at("stiff"), "pdet_at_300ml_cmh2o");
   write_text(*dir_ / "study.yaml", study_yaml("1.5"));
   EXPECT_EQ(run_json(*dir_ / "study.yaml", *dir_, "-j 2"), Ids{"simulate@stiff"});
-  const auto table = read_table(out() / "study.csv");
+  const auto table = read_study_table(out() / "study.csv");
   EXPECT_EQ(table.at("stiff").at("simulate.mu_kpa"), "1.5");
   // mu 1 < 1.5 < 2 kPa: the new pressure lies between the two earlier ones.
   const double mu15 = number(table.at("stiff"), "pdet_at_300ml_cmh2o");

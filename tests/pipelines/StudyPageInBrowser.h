@@ -1,17 +1,41 @@
 #pragma once
-// A study page as headless Chromium shows it in a 1280-px window: the DOM after its
-// scripts ran (PageCheckScript.h writes what it measured into <body data-...>) and the
-// browser's log, for the study page tests.
+// A study's outputs as its tests read them: study.csv as a table, and the page as headless
+// Chromium shows it in a 1280-px window: the DOM after its scripts ran (PageCheckScript.h
+// writes what it measured into <body data-...>) and the browser's log.
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "PipelineTestSupport.h"
 
 namespace vesica::test {
+
+// study.csv as variant -> column -> cell (the study tests' cells hold no comma).
+using StudyTable = std::map<std::string, std::map<std::string, std::string>>;
+inline StudyTable read_study_table(const std::filesystem::path& csv) {
+  std::istringstream in(slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::stringstream hs(line);
+  for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
+  StudyTable table;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::map<std::string, std::string> row;
+    std::size_t i = 0;
+    for (std::string cell; i < header.size() && std::getline(ls, cell, ',');)
+      row[header[i++]] = cell;
+    table[row["variant"]] = row;
+  }
+  return table;
+}
 
 struct PageInBrowser {
   int exit_code = -1;
