@@ -13,64 +13,111 @@
 #include <algorithm>
 
 #include <cmath>
+#include <filesystem>
+#include <iostream>
 #include <memory>
 #include <string>
 
+#include "ShellCommand.h"
+#include "TestData.h"
 #include "cavity/HydrostaticCavity.h"
+#include "cavity/LevelLadder.h"
+#include "fluid/NavierStokesCavity.h"
 #include "protocol/CystometryProtocol.h"
 #include "vesica/core/Units.h"
+#include "vesica/simulate/fluid/FluidMesh.h"
 #include "vesica/simulate/materials/MaterialRegistry.h"
 #include "vesica/simulate/protocol/Cystometry.h"
+#include "vesica/simulate/wall/MeshReader.h"
 #include "vesica/simulate/wall/SphereMesh.h"
+#include "vesica/simulate/wall/WallLoading.h"
 
 using namespace vesica;
 using namespace vesica::simulate;
 
 namespace {
 
-// The level-1 wall, whose voiding steps fail (as a chattering tension field does) once
-// the volume has fallen below fail_below_m3, until the wall hands its voiding over.
-class FailingWall final : public CavityModel {
+// A model of any level whose voiding steps fail (as a chattering tension field does) once
+// the volume has fallen below fail_below_m3, so that the protocol hands its voiding down;
+// otherwise the model it stands for, whole.
+class FailingModel final : public CavityModel {
  public:
-  FailingWall(HydrostaticCavity& wall, double fail_below_m3)
-      : wall_(wall), fail_below_(fail_below_m3) {}
+  FailingModel(CavityModel& model, double fail_below_m3) : m_(model), fail_below_(fail_below_m3) {}
+  FailingModel(std::unique_ptr<CavityModel> owned, double fail_below_m3)
+      : owned_(std::move(owned)), m_(*owned_), fail_below_(fail_below_m3) {}
 
-  StepRules rules() const override { return wall_.rules(); }
-  bool needs_settling(double v) const override { return wall_.needs_settling(v); }
+  StepRules rules() const override { return m_.rules(); }
+  bool needs_settling(double v) const override { return m_.needs_settling(v); }
   StepResult try_volume_step(double v, const ProtocolLoads& l) override {
-    return wall_.try_volume_step(v, l);
+    return m_.try_volume_step(v, l);
   }
-  void start_clock() override { wall_.start_clock(); }
-  void urethra_opens(const UrethraLaw& u) override { wall_.urethra_opens(u); }
+  void start_clock() override { m_.start_clock(); }
+  void urethra_opens(const UrethraLaw& u) override { m_.urethra_opens(u); }
   StepResult try_step(const StepRequest& step) override {
-    if (!handed_over_ && step.urethra && wall_.volume() < fail_below_) {
+    if (step.urethra && m_.volume() < fail_below_) {
       StepResult r;
       r.failure = "no convergence (made to fail by the test)";
       return r;
     }
-    return wall_.try_step(step);
+    return m_.try_step(step);
   }
-  bool hand_over_voiding(const std::string& failure, double time_s) override {
-    handed_over_ = wall_.hand_over_voiding(failure, time_s);
-    return handed_over_;
+  int level() const override { return m_.level(); }
+  CarriedState carried_state() const override { return m_.carried_state(); }
+  std::string voiding_end_note(const std::string& f) const override {
+    return m_.voiding_end_note(f);
   }
-  double volume() const override { return wall_.volume(); }
-  double pves() const override { return wall_.pves(); }
-  double outflow() const override { return wall_.outflow(); }
-  double reference_volume() const override { return wall_.reference_volume(); }
-  const WallModel& wall() const override { return wall_.wall(); }
-  std::vector<Eigen::Vector3d> wall_positions() const override { return wall_.wall_positions(); }
-  std::vector<MembraneStressOutput> wall_stresses() const override { return wall_.wall_stresses(); }
-  nlohmann::json statistics() const override { return wall_.statistics(); }
-  void add_summary(nlohmann::json& s) const override { wall_.add_summary(s); }
-  std::vector<std::string> take_notes() override { return wall_.take_notes(); }
-  std::vector<LevelHandOver> hand_overs() const override { return wall_.hand_overs(); }
+  double volume() const override { return m_.volume(); }
+  double pves() const override { return m_.pves(); }
+  double outflow() const override { return m_.outflow(); }
+  double reference_volume() const override { return m_.reference_volume(); }
+  const WallModel& wall() const override { return m_.wall(); }
+  std::vector<Eigen::Vector3d> wall_positions() const override { return m_.wall_positions(); }
+  std::vector<MembraneStressOutput> wall_stresses() const override { return m_.wall_stresses(); }
+  nlohmann::json statistics() const override { return m_.statistics(); }
+  void add_summary(nlohmann::json& s) const override { m_.add_summary(s); }
+  void add_frame(double t, bool write) override { m_.add_frame(t, write); }
+  void finish_frames() override { m_.finish_frames(); }
+  std::vector<std::string> take_notes() override { return m_.take_notes(); }
+  std::string progress_label() const override { return m_.progress_label(); }
 
  private:
-  HydrostaticCavity& wall_;
+  std::unique_ptr<CavityModel> owned_;
+  CavityModel& m_;
   double fail_below_;
-  bool handed_over_ = false;
 };
+
+// The ladder of levels, whose level 1 fails in turn below fail_below_m3.
+class LadderFailingAtLevelOne final : public LevelLadder {
+ public:
+  LadderFailingAtLevelOne(const WallModel& wall, const Material& material,
+                          const ProtocolSettings& settings, const RunOptions& options,
+                          double fail_below_m3)
+      : LevelLadder(wall, material, settings, options), fail_below_(fail_below_m3) {}
+  Step below(const CavityModel& from, const std::string& failure) const override {
+    Step step = LevelLadder::below(from, failure);
+    if (step.model && step.model->level() == 1)
+      step.model = std::make_unique<FailingModel>(std::move(step.model), fail_below_);
+    return step;
+  }
+
+ private:
+  double fail_below_;
+};
+
+// V = V_start + infused − voided on every row (continuity, through every hand-over).
+void expect_mass_balance(const CystometryResult& r) {
+  const double start = r.history.front().volume_ml;
+  for (const HistoryRow& row : r.history)
+    EXPECT_NEAR(row.volume_ml, start + row.infused_ml - row.voided_ml, 1e-6 * start)
+        << "t = " << row.time_s;
+}
+
+// Whether a history row stands where the hand-over says it happened.
+bool a_row_is_at(const CystometryResult& r, const LevelHandOver& h) {
+  return std::any_of(r.history.begin(), r.history.end(), [&](const HistoryRow& row) {
+    return row.time_s == h.time_s && row.volume_ml == h.volume_ml;
+  });
+}
 
 // The default bladder wall as a 20 ml sphere (its stress-free volume), held only against
 // rigid motion, without gravity: a wall that stays a sphere (as in PhysiologyTest).
@@ -99,8 +146,9 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
 
   const std::unique_ptr<Material> material = make_material({"bladder", {}});
   HydrostaticCavity cavity(wall, *material, p, o);
-  FailingWall failing(cavity, units::m3_from_ml(175.0));
-  const CystometryResult tail = CystometryProtocol(p, o).run(failing);
+  FailingModel failing(cavity, units::m3_from_ml(175.0));
+  const LevelLadder ladder(wall, *material, p, o);
+  const CystometryResult tail = CystometryProtocol(p, o).run(failing, &ladder);
   ASSERT_TRUE(tail.completed) << tail.failure;
 
   ASSERT_TRUE(tail.summary.contains("voiding_tail")) << tail.summary.dump(1);
@@ -114,14 +162,12 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
 
   // The model card's hand-over is the same one: level 1 to 0 where the wall stopped, at the
   // time of its last row.
-  const std::vector<LevelHandOver> hand_overs = failing.hand_overs();
+  const std::vector<LevelHandOver>& hand_overs = tail.card.hand_overs;
   ASSERT_EQ(hand_overs.size(), 1u);
   EXPECT_EQ(hand_overs[0].from, 1);
   EXPECT_EQ(hand_overs[0].to, 0);
   EXPECT_EQ(hand_overs[0].volume_ml, t["from_ml"].get<double>());
-  EXPECT_TRUE(std::any_of(tail.history.begin(), tail.history.end(), [&](const HistoryRow& r) {
-    return r.time_s == hand_overs[0].time_s && r.volume_ml == hand_overs[0].volume_ml;
-  }));
+  EXPECT_TRUE(a_row_is_at(tail, hand_overs[0]));
   EXPECT_NE(hand_overs[0].reason.find("could not take a voiding step"), std::string::npos);
 
   // Pdet across the hand-over: the last wall row and the first tail row, one step apart.
@@ -134,10 +180,7 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
       EXPECT_NEAR(b.pdet_cmh2o, a.pdet_cmh2o, 0.03 * a.pdet_cmh2o);
     }
   }
-  const double start = tail.history.front().volume_ml;
-  for (const HistoryRow& row : tail.history)
-    EXPECT_NEAR(row.volume_ml, start + row.infused_ml - row.voided_ml, 1e-6 * start)
-        << "t = " << row.time_s;
+  expect_mass_balance(tail);
 
   std::cout << "[ tail ] voided " << tail.summary["voided_ml"] << " vs "
             << whole.summary["voided_ml"] << " ml, Qmax " << tail.summary["qmax_ml_s"] << " vs "
@@ -148,4 +191,71 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
   EXPECT_NEAR(tail.summary["pvr_ml"].get<double>(), whole.summary["pvr_ml"].get<double>(), 2.0);
   EXPECT_NEAR(tail.summary["qmax_ml_s"].get<double>(), whole.summary["qmax_ml_s"].get<double>(),
               0.03 * whole.summary["qmax_ml_s"].get<double>());
+}
+
+// The protocol alone decides a hand-over, whatever level the run started at: a level-2 run
+// whose Navier–Stokes voiding is made to fail below 100 ml goes on at level 1, whose wall is
+// made to fail below 80 ml in turn and goes on at level 0, each from the state of the level
+// above. Checked against truths outside the ladder: continuity on every row, and the void
+// of an uninterrupted level-1 run of the same wall (a sphere, on which level 0 is the
+// wall's own answer and level 2's urine adds little: the same voided volume and PVR within
+// 2 ml).
+TEST(VoidingTail, AVoidHandedDownTwoLevelsFromLevelTwoEndsLikeALevelOneRun) {
+  namespace fs = std::filesystem;
+  const fs::path dir = test::scratch_dir("voiding_tail_from_level_two");
+  const std::string bin = test::bin_dir().string();
+  test::CommandResult c =
+      test::run_command(bin + "/vesica-surface -o " + (dir / "sphere.vtp").string() +
+                        " --shape sphere --volume-ml 50 --edge-mm 8 --outlet auto --json");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  c = test::run_command(bin + "/vesica-mesh " + (dir / "sphere.vtp").string() + " -o " +
+                        (dir / "sphere.msh").string() + " --fluid --json");
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const WallModel wall = load_wall(dir / "sphere.vtu", WallOptions{});
+  const fluid::FluidMesh urine = read_urine(dir / "sphere.vtu");
+  ProtocolSettings p;
+  p.capacity_ml = 120.0;
+
+  const CystometryResult level1 = run_cystometry(wall, {"bladder", {}}, p, RunOptions{});
+  ASSERT_TRUE(level1.completed) << level1.failure;
+  EXPECT_TRUE(level1.card.hand_overs.empty());
+
+  RunOptions o;
+  o.level = 2;
+  const std::unique_ptr<Material> material = make_material({"bladder", {}});
+  fluid::NavierStokesCavity navier_stokes(wall, fluid::reference_urine(urine, wall), *material, p,
+                                          o);
+  FailingModel failing(navier_stokes, units::m3_from_ml(100.0));
+  const LadderFailingAtLevelOne ladder(wall, *material, p, o, units::m3_from_ml(80.0));
+  const CystometryResult r = CystometryProtocol(p, o).run(failing, &ladder);
+  ASSERT_TRUE(r.completed) << r.failure;
+
+  const std::vector<LevelHandOver>& h = r.card.hand_overs;
+  ASSERT_EQ(h.size(), 2u) << r.summary["notes"];
+  EXPECT_EQ(h[0].from, 2);
+  EXPECT_EQ(h[0].to, 1);
+  EXPECT_LT(h[0].volume_ml, 100.0);
+  EXPECT_GT(h[0].volume_ml, 80.0);
+  EXPECT_EQ(h[1].from, 1);
+  EXPECT_EQ(h[1].to, 0);
+  EXPECT_LT(h[1].volume_ml, 80.0);
+  EXPECT_GT(h[0].time_s, 0.0);
+  EXPECT_GT(h[1].time_s, h[0].time_s);
+  for (const LevelHandOver& each : h) EXPECT_TRUE(a_row_is_at(r, each)) << each.volume_ml;
+  // The summary and the solver statistics say the same.
+  EXPECT_EQ(r.summary["level"], 2);
+  EXPECT_EQ(r.summary["level1_from"]["volume_ml"].get<double>(), h[0].volume_ml);
+  EXPECT_EQ(r.summary["voiding_tail"]["from_level"], 1);
+  EXPECT_EQ(r.summary["voiding_tail"]["from_ml"].get<double>(), h[1].volume_ml);
+  ASSERT_EQ(r.summary["newton"]["after_hand_over"].size(), 2u);
+  EXPECT_EQ(r.summary["newton"]["after_hand_over"][0]["level"], 1);
+  EXPECT_EQ(r.summary["newton"]["after_hand_over"][1]["level"], 0);
+  expect_mass_balance(r);
+
+  std::cout << "[ ladder ] hand-overs at " << h[0].volume_ml << " and " << h[1].volume_ml
+            << " ml; voided " << r.summary["voided_ml"] << " vs " << level1.summary["voided_ml"]
+            << " ml, PVR " << r.summary["pvr_ml"] << " vs " << level1.summary["pvr_ml"] << " ml"
+            << std::endl;
+  EXPECT_NEAR(r.summary["pvr_ml"].get<double>(), level1.summary["pvr_ml"].get<double>(), 2.0);
+  EXPECT_NEAR(r.summary["voided_ml"].get<double>(), level1.summary["voided_ml"].get<double>(), 2.0);
 }

@@ -5,15 +5,16 @@
 // activate, void, stop), the time-dependent loads (Pabd, straining, the detrusor's
 // activation curve), the urethra law and when it opens, validation, the bookkeeping of time,
 // infused and voided volume, the history rows, the frames' schedule, the cut-backs of failed steps
-// and the summary. SI units throughout.
+// and the summary, and the hand-over of a void to a simpler level (LevelLadder.h). SI units
+// throughout.
 //
-// Two models implement it: HydrostaticCavity (level 1: the urine as an enclosed volume
-// with a hydrostatic pressure) and fluid::NavierStokesCavity (level 2: the urine as a flow
-// on its tetrahedra). A third model (e.g. a 0-D lumped bladder with an analytic P(V), for
-// fast calibration) is one new class deriving from CavityModel: implement the pure virtual
+// Three models implement it: LumpedCavity (level 0: the wall's sphere-equivalent),
+// HydrostaticCavity (level 1: the urine as an enclosed volume with a hydrostatic pressure)
+// and fluid::NavierStokesCavity (level 2: the urine as a flow on its tetrahedra). Another
+// model is one new class deriving from CavityModel: implement the pure virtual
 // functions (try_volume_step, try_step and the state getters), override the defaulted ones
 // where the model needs them, and run it with
-//   CystometryProtocol(settings, options).run(model);
+//   CystometryProtocol(settings, options).run(model);   // or .run(model, &ladder)
 // (to offer it in run_cystometry, add one case where Cystometry.cpp picks the model by
 // RunOptions::level). tests/simulate/ProtocolTest.cpp drives such a model.
 #include <string>
@@ -31,6 +32,7 @@ namespace vesica::simulate {
 
 class CheckpointWriter;
 class CheckpointReader;
+class MembraneProblem;
 
 // The protocol's time-dependent loads at one instant.
 struct ProtocolLoads {
@@ -48,6 +50,25 @@ struct StepRequest {
   // The protocol's bookkeeping before the step: a volume-controlled model's urine volume
   // at its end is start + infused + dt inflow − voided − (what leaves during the step).
   double infused_m3 = 0.0, voided_m3 = 0.0;
+};
+
+// What a simpler model carries on from when the protocol hands the voiding down a level
+// (LevelLadder.h; docs/simulate.md, "Levels and their hand-overs"): the last converged state
+// of the model that could not go on. One record for every hand-over (2 → 1, 1 → 0).
+struct CarriedState {
+  int level = -1;                // of the model it comes from (-1: it carries nothing)
+  double volume_m3 = 0.0;        // the urine volume now
+  double pves_pa = 0.0;          // the urine pressure at the reference point now
+  double outflow_m3_s = 0.0;     // through the urethra now
+  double start_volume_m3 = 0.0;  // when the clock started: the protocol's bookkeeping base
+  ProtocolLoads loads;           // of the last converged step (Pabd, activation)
+  // The last converged step: from this volume, this long (0: none known, e.g. right after
+  // a hand-over); a rate-dependent wall starts its history from it.
+  double volume_before_m3 = 0.0, dt_before_s = 0.0;
+  std::vector<Eigen::Vector3d> wall_positions;  // per wall node (m)
+  // The membrane wall's committed history (Maxwell branches, thickness guesses); null
+  // where the model has none. Valid while the model it comes from lives.
+  const MembraneProblem* wall_history = nullptr;
 };
 
 struct StepResult {
@@ -101,17 +122,14 @@ class CavityModel {
   // One timed step. Converged: the model has moved to its end. Not converged: the state is
   // as before the attempt, so that the protocol may retry a shorter step.
   virtual StepResult try_step(const StepRequest& step) = 0;
-  // A voiding step failed after all cut-backs with the urethra open, at the protocol's
-  // time_s: whether the model hands the rest of its voiding over to a simpler one it carries
-  // on as (level 1 to its sphere-equivalent, docs/simulate.md "The tail of voiding"),
-  // noting it; false: no.
-  virtual bool hand_over_voiding(const std::string& /*failure*/, double /*time_s*/) {
-    return false;
-  }
-  // Every hand-over between levels so far, in order (the model card's).
-  virtual std::vector<LevelHandOver> hand_overs() const { return {}; }
-  // A voiding step failed after all cut-backs: the note that ends voiding there without
-  // failing the run (where the model cannot follow the wall any further), or "" to fail.
+  // Its place on the ladder of levels (LevelLadder.h): 2, 1 or 0; -1: none (a model no
+  // other carries on from, e.g. a test's).
+  virtual int level() const { return -1; }
+  // The last converged state, for the model one level down (LevelLadder.h).
+  virtual CarriedState carried_state() const { return {}; }
+  // A voiding step failed after all cut-backs and no level below took over: the note that
+  // ends voiding there without failing the run (where the model cannot follow the wall any
+  // further), or "" to fail.
   virtual std::string voiding_end_note(const std::string& /*failure*/) const { return ""; }
 
   // State.

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include "vesica/core/Log.h"
@@ -176,7 +176,6 @@ void HydrostaticCavity::urethra_opens(const UrethraLaw& urethra) {
 }
 
 StepResult HydrostaticCavity::try_step(const StepRequest& step) {
-  if (tail_) return tail_step(step);
   const double V_target = V0_ + step.infused_m3 + step.dt_s * step.inflow_m3_s - step.voided_m3;
   int iterations = 0;
   double voided = 0.0;
@@ -188,102 +187,41 @@ StepResult HydrostaticCavity::try_step(const StepRequest& step) {
   return failed(iterations);
 }
 
-void HydrostaticCavity::continue_from(const std::vector<Eigen::Vector3d>& x,
-                                      const MembraneProblem& wall_state, const Takeover& state,
-                                      const ProtocolLoads& loads) {
-  x_ = x;
-  problem_.copy_committed_state(wall_state);
+void HydrostaticCavity::continue_from(const CarriedState& state) {
+  if (!state.wall_history || state.wall_positions.size() != x_.size())
+    throw std::runtime_error("the state carried has no membrane wall of this mesh");
+  x_ = state.wall_positions;
+  problem_.copy_committed_state(*state.wall_history);
   loads_.inside.p0 = state.pves_pa;
   q_out_ = state.outflow_m3_s;
   V0_ = state.start_volume_m3;
   volume_ = enclosed_volume(wall_, x_);
-  committed_loads_ = loads;
-  set_loads(loads);
+  committed_loads_ = state.loads;
+  set_loads(state.loads);
   x_before_.clear();  // no last step to extrapolate from
   dt_before_ = 0.0;
   smooth_ = false;
 }
 
-std::vector<MembraneStressOutput> HydrostaticCavity::wall_stresses() const {
-  if (tail_) return tail_->wall_stresses();
-  return problem_.element_outputs(x_, loads_);
-}
-
-// The wall's last converged state goes on as the sphere-equivalent's: the same volume, the
-// same bookkeeping base, the fibers' last shortening rate, and its Pdet scaled to the
-// wall's. The protocol then steps the tail as it stepped the wall.
-bool HydrostaticCavity::hand_over_voiding(const std::string& failure, double time_s) {
-  if (tail_ || !(dt_before_ > 0.0) || x_before_.size() != x_.size()) return false;
-  LumpedCavity::WallState state;
-  state.volume_m3 = volume_;
-  state.pdet_pa = loads_.inside.p0 - committed_loads_.pabd_pa;
-  state.pabd_pa = committed_loads_.pabd_pa;
-  state.outflow_m3_s = q_out_;
-  state.start_volume_m3 = V0_;
-  state.volume_before_m3 = enclosed_volume(wall_, x_before_);
-  state.dt_s = dt_before_;
-  state.activation = committed_loads_.activation;
-  auto tail = std::make_unique<LumpedCavity>(wall_, material_, settings_);
-  try {
-    tail->take_over(state);
-  } catch (const std::runtime_error& e) {
-    vesica::log()->debug("no hand-over to the sphere-equivalent: {}", e.what());
-    return false;
+CarriedState HydrostaticCavity::carried_state() const {
+  CarriedState s;
+  s.level = level();
+  s.volume_m3 = volume_;
+  s.pves_pa = loads_.inside.p0;
+  s.outflow_m3_s = q_out_;
+  s.start_volume_m3 = V0_;
+  s.loads = committed_loads_;
+  if (dt_before_ > 0.0 && x_before_.size() == x_.size()) {
+    s.volume_before_m3 = enclosed_volume(wall_, x_before_);
+    s.dt_before_s = dt_before_;
   }
-  tail_ = std::move(tail);
-  x_handed_ = x_;
-  V_handed_ = volume_;
-  time_handed_ = time_s;
-  handed_because_ = failure;
-  std::ostringstream note;
-  note.precision(4);
-  note << "the wall could not take a voiding step at V = " << units::ml_from_m3(volume_) << " ml ("
-       << failure << "); from there the voiding ran on its sphere-equivalent "
-       << "(level 0), its pressure scaled by " << tail_->pressure_scale() << " to the wall's";
-  notes_.push_back(note.str());
-  vesica::log()->warn("{}", notes_.back());
-  return true;
+  s.wall_positions = x_;
+  s.wall_history = &problem_;
+  return s;
 }
 
-StepResult HydrostaticCavity::tail_step(const StepRequest& step) {
-  StepResult r = tail_->try_step(step);
-  if (!r.converged) return r;
-  volume_ = tail_->volume();
-  loads_.inside.p0 = tail_->pves();
-  q_out_ = tail_->outflow();
-  committed_loads_ = step.loads;
-  return r;
-}
-
-// After the hand-over: the wall as it was handed over, scaled about its mean node by the
-// tail's volume ratio (the frames show the volume, not a computed wall).
-std::vector<Eigen::Vector3d> HydrostaticCavity::wall_positions() const {
-  if (!tail_) return x_;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  for (const auto& p : x_handed_) centre += p;
-  centre /= static_cast<double>(x_handed_.size());
-  const double s = std::cbrt(std::max(volume_, 0.0) / V_handed_);
-  std::vector<Eigen::Vector3d> x(x_handed_);
-  for (auto& p : x) p = centre + s * (p - centre);
-  return x;
-}
-
-void HydrostaticCavity::add_summary(nlohmann::json& summary) const {
-  if (!tail_) return;
-  summary["voiding_tail"] = {{"model", "sphere-equivalent (level 0)"},
-                             {"from_ml", units::ml_from_m3(V_handed_)},
-                             {"pressure_scale", tail_->pressure_scale()},
-                             {"wall_failure", handed_because_}};
-}
-
-std::vector<LevelHandOver> HydrostaticCavity::hand_overs() const {
-  if (!tail_) return {};
-  return {{1, 0, units::ml_from_m3(V_handed_), time_handed_,
-           "the wall could not take a voiding step (" + handed_because_ + ")"}};
-}
-
-std::vector<std::string> HydrostaticCavity::take_notes() {
-  return std::exchange(notes_, {});
+std::vector<MembraneStressOutput> HydrostaticCavity::wall_stresses() const {
+  return problem_.element_outputs(x_, loads_);
 }
 
 }  // namespace vesica::simulate

@@ -14,7 +14,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cavity/CavityModel.h"
-#include "cavity/LumpedCavity.h"
 #include "solver/BossakNewmark.h"
 #include "solver/NewtonSolver.h"
 #include "solver/StepStatistics.h"
@@ -33,22 +32,13 @@ class HydrostaticCavity final : public CavityModel {
   void start_clock() override;
   void urethra_opens(const UrethraLaw& urethra) override;
   StepResult try_step(const StepRequest& step) override;
-  // Where another model on the same wall stands (level 2 below the stress-free volume,
-  // docs/navier-stokes.md §8).
-  struct Takeover {
-    double pves_pa = 0.0;          // the urine pressure now
-    double outflow_m3_s = 0.0;     // through the urethra now
-    double start_volume_m3 = 0.0;  // when the clock started: the protocol's bookkeeping base
-  };
-  // Continues, with the clock running, from that state: the wall at x with wall_state's
-  // committed history, under loads.
-  void continue_from(const std::vector<Eigen::Vector3d>& x, const MembraneProblem& wall_state,
-                     const Takeover& state, const ProtocolLoads& loads);
-  // A voiding step the wall cannot take: the rest of voiding runs on the wall's
-  // sphere-equivalent (LumpedCavity, level 0) from the wall's state, its pressure matched
-  // to the wall's; the note and the summary's "voiding_tail" say from where.
-  bool hand_over_voiding(const std::string& failure, double time_s) override;
-  std::vector<LevelHandOver> hand_overs() const override;
+  // Continues, with the clock running, from a more detailed model's state on the same wall
+  // (level 2's, LevelLadder.h): the wall at its positions with its committed history, the
+  // pressure, outflow, bookkeeping and loads. Throws std::runtime_error when the state has
+  // no membrane wall to carry on.
+  void continue_from(const CarriedState& state);
+  int level() const override { return 1; }
+  CarriedState carried_state() const override;
   // Below the stress-free volume a failed voiding step ends voiding: the wall is slack
   // there and its tension field may have no solution (docs/simulate.md).
   std::string voiding_end_note(const std::string& failure) const override;
@@ -58,11 +48,9 @@ class HydrostaticCavity final : public CavityModel {
   double outflow() const override { return q_out_; }
   double reference_volume() const override { return V_reference_; }
   const WallModel& wall() const override { return wall_; }
-  std::vector<Eigen::Vector3d> wall_positions() const override;
+  std::vector<Eigen::Vector3d> wall_positions() const override { return x_; }
   std::vector<MembraneStressOutput> wall_stresses() const override;
   nlohmann::json statistics() const override { return statistics_.json(); }
-  void add_summary(nlohmann::json& summary) const override;
-  std::vector<std::string> take_notes() override;
 
   // Checkpoints (HydrostaticCavityState.cpp): the wall, its history and dynamics, the
   // pressure and bookkeeping, and what the solver carries to the next step.
@@ -79,7 +67,6 @@ class HydrostaticCavity final : public CavityModel {
   void set_loads(const ProtocolLoads& loads);
   StepResult accepted(int iterations, double voided);
   StepResult failed(int iterations);
-  StepResult tail_step(const StepRequest& step);
 
   const WallModel& wall_;
   const Material& material_;
@@ -101,13 +88,6 @@ class HydrostaticCavity final : public CavityModel {
   // before it.
   StepStatistics statistics_;
   int failed_attempts_ = 0;  // since the last converged step
-  // The tail of voiding (hand_over_voiding): the model that carries it, the wall where it
-  // was handed over (its frames are that wall scaled to the tail's volume), and why.
-  std::unique_ptr<LumpedCavity> tail_;
-  std::vector<Eigen::Vector3d> x_handed_;
-  double V_handed_ = 0.0, time_handed_ = 0.0;
-  std::string handed_because_;
-  std::vector<std::string> notes_;
 };
 
 }  // namespace vesica::simulate

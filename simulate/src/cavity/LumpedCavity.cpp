@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "vesica/core/Units.h"
 #include "wall/TensionField.h"
@@ -57,21 +59,42 @@ double LumpedCavity::wall_pressure(double V, double dt, double activation) {
   return pressure_scale_ * 2.0 * trial_.S(0, 0) * H_ / (R_ * lambda);
 }
 
-void LumpedCavity::take_over(const WallState& wall) {
+void LumpedCavity::take_over(const CarriedState& wall) {
+  if (!(wall.dt_before_s > 0.0) || !(wall.volume_before_m3 > 0.0))
+    throw std::runtime_error("no last step of the wall to carry on from");
   V0_ = wall.start_volume_m3;
-  pabd_ = wall.pabd_pa;
+  pabd_ = wall.loads.pabd_pa;
   q_out_ = wall.outflow_m3_s;
   pressure_scale_ = 1.0;
   history_.assign(material_.history_size(), 0.0);
   trial_history_ = history_;
-  wall_pressure(wall.volume_before_m3, kRelaxedStep, wall.activation);
+  wall_pressure(wall.volume_before_m3, kRelaxedStep, wall.loads.activation);
   accept(wall.volume_before_m3);
-  const double own = wall_pressure(wall.volume_m3, wall.dt_s, wall.activation);
+  const double own = wall_pressure(wall.volume_m3, wall.dt_before_s, wall.loads.activation);
   accept(wall.volume_m3);
   constexpr double kLargestScale = 4.0;
-  if (own > 0.0 && wall.pdet_pa > 0.0)
-    pressure_scale_ = std::clamp(wall.pdet_pa / own, 1.0 / kLargestScale, kLargestScale);
+  const double wall_pdet = wall.pves_pa - wall.loads.pabd_pa;
+  if (own > 0.0 && wall_pdet > 0.0)
+    pressure_scale_ = std::clamp(wall_pdet / own, 1.0 / kLargestScale, kLargestScale);
   pdet_ = pressure_scale_ * own;
+  x_handed_ = wall.wall_positions;
+  V_handed_ = wall.volume_m3;
+  std::ostringstream note;
+  note.precision(4);
+  note << "the sphere-equivalent (level 0) carries on with its pressure scaled by "
+       << pressure_scale_ << " to the wall's";
+  notes_.push_back(note.str());
+}
+
+std::string LumpedCavity::voiding_end_note(const std::string& failure) const {
+  if (volume_ > V_reference_) return "";
+  return "voiding ended at " + std::to_string(units::ml_from_m3(volume_)) +
+         " ml, below the stress-free volume, where the sphere-equivalent could not go on (" +
+         failure + ")";
+}
+
+std::vector<std::string> LumpedCavity::take_notes() {
+  return std::exchange(notes_, {});
 }
 
 StepResult LumpedCavity::accept(double V) {
@@ -170,6 +193,15 @@ double LumpedCavity::voided_volume(double V_base, const StepRequest& step) {
 }
 
 std::vector<Eigen::Vector3d> LumpedCavity::wall_positions() const {
+  if (!x_handed_.empty()) {  // the wall as handed over, about its mean node
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto& p : x_handed_) centre += p;
+    centre /= static_cast<double>(x_handed_.size());
+    const double s = std::cbrt(std::max(volume_, 0.0) / V_handed_);
+    std::vector<Eigen::Vector3d> x(x_handed_);
+    for (auto& p : x) p = centre + s * (p - centre);
+    return x;
+  }
   const double lambda = std::cbrt(volume_ / V_reference_);
   std::vector<Eigen::Vector3d> x(wall_.nodes);
   for (Eigen::Vector3d& p : x) p = centroid_ + lambda * (p - centroid_);
@@ -190,6 +222,10 @@ std::vector<MembraneStressOutput> LumpedCavity::wall_stresses() const {
 }
 
 void LumpedCavity::add_summary(nlohmann::json& summary) const {
+  if (!x_handed_.empty()) {  // the tail of another level's voiding: its own key only
+    summary["voiding_tail"]["pressure_scale"] = pressure_scale_;
+    return;
+  }
   summary["level"] = 0;
   summary["sphere_radius_mm"] = units::mm_from_m(R_);
   summary["sphere_thickness_mm"] = units::mm_from_m(H_);

@@ -44,24 +44,19 @@ class LumpedCavity final : public CavityModel {
   nlohmann::json statistics() const override { return statistics_.json(); }
   void add_summary(nlohmann::json& summary) const override;
 
-  // Where a wall (level 1) stands when it hands the rest of its voiding over to this model
-  // (HydrostaticCavity::hand_over_voiding; docs/simulate.md, "The tail of voiding").
-  struct WallState {
-    double volume_m3 = 0.0;         // the wall's volume now
-    double pdet_pa = 0.0;           // and its transmural pressure
-    double pabd_pa = 0.0;           // the abdominal pressure of its last step
-    double outflow_m3_s = 0.0;      // through the urethra now
-    double start_volume_m3 = 0.0;   // when the clock started: the protocol's bookkeeping base
-    double volume_before_m3 = 0.0;  // before the wall's last step, which took
-    double dt_s = 0.0;              // this long
-    double activation = 0.0;        // under this activation
-  };
-  // Continues from that state: the sphere's history is the relaxed one at the volume
-  // before the wall's last step, then that step (the fibers' shortening rate of the
-  // wall's last step for the Hill relation), and its pressure is scaled from then on by the
-  // wall's Pdet over its own (the shape factor of a wall that is not a sphere, clamped to
-  // [1/4, 4]; 1 where either is not positive): pressure_scale().
-  void take_over(const WallState& wall);
+  int level() const override { return 0; }
+  // Below the stress-free volume a failed voiding step ends voiding, as at level 1.
+  std::string voiding_end_note(const std::string& failure) const override;
+  std::vector<std::string> take_notes() override;
+
+  // Continues the voiding of a wall (level 1) that could not go on (LevelLadder.h), from
+  // its state: the sphere's history is the relaxed one at the volume before the wall's
+  // last step, then that step (the fibers' shortening rate of the wall's last step for the
+  // Hill relation), and its pressure is scaled from then on by the wall's Pdet over its own
+  // (the shape factor of a wall that is not a sphere, clamped to [1/4, 4]; 1 where either
+  // is not positive): pressure_scale(). Its frames are then the wall as handed over,
+  // scaled to the volume. Throws std::runtime_error without a last step to start from.
+  void take_over(const CarriedState& wall);
   double pressure_scale() const { return pressure_scale_; }  // take_over's; 1 before it
 
   // The sphere-equivalent's reference radius (m) and thickness (m).
@@ -85,6 +80,10 @@ class LumpedCavity final : public CavityModel {
   Eigen::Vector3d centroid_ = Eigen::Vector3d::Zero();
   double volume_ = 0.0, V0_ = 0.0, pdet_ = 0.0, pabd_ = 0.0, q_out_ = 0.0;
   double pressure_scale_ = 1.0;  // take_over's shape factor
+  // The wall as take_over received it, and its volume (empty: a run started at level 0).
+  std::vector<Eigen::Vector3d> x_handed_;
+  double V_handed_ = 0.0;
+  std::vector<std::string> notes_;
   // The point's history: committed, and of the last trial evaluation.
   std::vector<double> history_, trial_history_;
   PlaneStressState state_, trial_;

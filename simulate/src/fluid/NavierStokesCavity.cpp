@@ -118,7 +118,6 @@ StepRules NavierStokesCavity::rules() const {
 }
 
 double NavierStokesCavity::volume() const {
-  if (collapse_) return collapse_->volume();
   return settler_ ? settler_->volume() : coupling_->fluid_volume();
 }
 
@@ -151,7 +150,6 @@ void NavierStokesCavity::start_clock() {
 // Pves: the urine pressure at the reference point (bladder neck) without the flow's
 // dynamic part, i.e. the wall-area mean of p − ρ g·(x − x_ref) (exact for urine at rest).
 double NavierStokesCavity::pves() const {
-  if (collapse_) return collapse_->pves();
   if (settler_) return settler_->pves();
   const auto& x = coupling_->positions();
   const auto& area = problem_.node_areas();
@@ -180,7 +178,6 @@ WallLoads NavierStokesCavity::step_loads(const StepRequest& step) const {
 }
 
 StepResult NavierStokesCavity::try_step(const StepRequest& step) {
-  if (collapse_) return collapse_->try_step(step);
   // The urethra opens once the pressure at the neck reaches the opening pressure.
   if (step.urethra && !coupling_->outlet_open() && pves() >= step.urethra->opening_pressure())
     open_urethra(*step.urethra, step.end_time_s - step.dt_s);
@@ -200,10 +197,6 @@ StepResult NavierStokesCavity::try_step(const StepRequest& step) {
   statistics_.iterations += r.iterations;
   StepResult result;
   result.iterations = r.iterations;
-  if (!r.converged && can_hand_over(step)) {
-    hand_over(step, r.failure);
-    return collapse_->try_step(step);
-  }
   if (!r.converged) {
     ++statistics_.cutbacks;
     result.failure = r.failure;
@@ -236,42 +229,22 @@ void NavierStokesCavity::open_urethra(const UrethraLaw& urethra, double time_s) 
 // can no longer fill the space the wall encloses (a fold turns them inside out, gmsh
 // refuses the self-touching wall). There the urine moves slowly and is close to
 // hydrostatic, and level 1 on the same wall (its wrinkling membrane, its hydrostatic
-// urine, the same urethra law) continues the voiding from level 2's state: the wall, its
+// urine, the same urethra law) can continue the voiding from this state: the wall, its
 // history, the pressure, the outflow and the volume bookkeeping (docs/navier-stokes.md §8).
-bool NavierStokesCavity::can_hand_over(const StepRequest& step) const {
-  return step.urethra && coupling_->outlet_open() && volume() < V_reference_;
-}
-
-void NavierStokesCavity::hand_over(const StepRequest& step, const std::string& failure) {
-  const double V = coupling_->fluid_volume();
-  auto level1 = std::make_unique<HydrostaticCavity>(wall_, material_, settings_, options_);
-  level1->continue_from(wall_positions(), problem_, {pves(), coupling_->outflow(), V_start_},
-                        committed_loads_);
-  collapse_ = std::move(level1);
-  collapse_time_s_ = step.end_time_s - step.dt_s;
-  collapse_volume_ = V;
-  collapse_reason_ = failure;
-  notes_.push_back("level 2 voided to " + std::to_string(units::ml_from_m3(V)) +
-                   " ml, below the stress-free volume, where the slack wall folds into the "
-                   "urine mesh (" +
-                   failure + "); level 1 continued the voiding from there");
-  vesica::log()->info("{}", notes_.back());
-}
-
-std::vector<LevelHandOver> NavierStokesCavity::hand_overs() const {
-  if (!collapse_) return {};
-  std::vector<LevelHandOver> list = {
-      {2, 1, units::ml_from_m3(collapse_volume_), collapse_time_s_,
-       "below the stress-free volume the slack wall folds into the urine mesh (" +
-           collapse_reason_ + ")"}};
-  for (LevelHandOver& h : collapse_->hand_overs()) list.push_back(std::move(h));
-  return list;
+CarriedState NavierStokesCavity::carried_state() const {
+  CarriedState s;
+  s.level = level();
+  s.volume_m3 = coupling_->fluid_volume();
+  s.pves_pa = pves();
+  s.outflow_m3_s = coupling_->outflow();
+  s.start_volume_m3 = V_start_;
+  s.loads = committed_loads_;
+  s.wall_positions = wall_positions();
+  s.wall_history = &problem_;
+  return s;
 }
 
 std::string NavierStokesCavity::voiding_end_note(const std::string& failure) const {
-  if (collapse_)
-    return "voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
-           " ml, where level 1 could not follow the slack wall further (" + failure + ")";
   if (volume() > V_reference_) return "";
   return "level-2 voiding ended at " + std::to_string(units::ml_from_m3(volume())) +
          " ml, below the stress-free volume, where the slack wall folds into the urine mesh (" +
@@ -329,13 +302,11 @@ void NavierStokesCavity::update_max_speed() {
 }
 
 std::vector<Eigen::Vector3d> NavierStokesCavity::wall_positions() const {
-  if (collapse_) return collapse_->wall_positions();
   const auto& x = coupling_->positions();
   return {x.begin(), x.begin() + static_cast<long>(wall_.node_count())};
 }
 
 std::vector<MembraneStressOutput> NavierStokesCavity::wall_stresses() const {
-  if (collapse_) return collapse_->wall_stresses();
   return problem_.element_outputs(wall_positions(), last_loads_);
 }
 
@@ -358,7 +329,6 @@ std::vector<Eigen::Vector3d> NavierStokesCavity::nodal_wall_shear(const FluidMes
 }
 
 void NavierStokesCavity::add_frame(double time_s, bool write) {
-  if (collapse_) return;  // no urine tetrahedra any more: the wall's frames go on
   const FluidMesh now = coupling_->current_mesh();
   const std::vector<Eigen::Vector3d> shear = nodal_wall_shear(now);
   for (std::size_t i = 0; i < wall_.node_count(); ++i)
@@ -377,24 +347,13 @@ void NavierStokesCavity::finish_frames() {
 }
 
 std::vector<std::string> NavierStokesCavity::take_notes() {
-  std::vector<std::string> notes = std::exchange(notes_, {});
-  if (collapse_)
-    for (std::string& n : collapse_->take_notes()) notes.push_back(std::move(n));
-  return notes;
-}
-
-// The void ends the same way whatever level the run started at: a level-1 void that
-// cannot take a step goes on as its sphere-equivalent (docs/simulate.md, "The tail of
-// voiding"), and so does level 1 carrying on from level 2.
-bool NavierStokesCavity::hand_over_voiding(const std::string& failure, double time_s) {
-  return collapse_ && collapse_->hand_over_voiding(failure, time_s);
+  return std::exchange(notes_, {});
 }
 
 nlohmann::json NavierStokesCavity::statistics() const {
   nlohmann::json s = statistics_.json();
   s["seconds_per_step"] = statistics_.steps ? step_seconds_ / statistics_.steps : 0.0;
   s["linear_solver"] = coupling_->linear_solver_statistics();
-  if (collapse_) s["level1_below_stress_free"] = collapse_->statistics();
   return s;
 }
 
@@ -408,10 +367,7 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
   s["jet"] = jet_summary(jet_);
-  if (collapse_) collapse_->add_summary(s);  // its tail, if level 1 handed one over
-  s["level1_from"] = collapse_ ? nlohmann::json{{"time_s", collapse_time_s_},
-                                                {"volume_ml", units::ml_from_m3(collapse_volume_)}}
-                               : nlohmann::json(nullptr);
+  s["level1_from"] = nullptr;  // the protocol's, once it hands the voiding to level 1
   s["time_steps_s"] = {{"filling", options_.level2.fill_dt_s},
                        {"voiding", options_.level2.void_dt_s}};
 }

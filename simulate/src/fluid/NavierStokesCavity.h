@@ -11,11 +11,11 @@
 // so both levels agree there), whose solver handles the slack wall of a scaled-down
 // patient shape; the flow starts from that taut wall at rest. The tetrahedra are rebuilt
 // (gmsh) when they degrade. Below the stress-free volume, where the slack wall folds into
-// the urine mesh and a voiding step fails, level 1 continues the voiding from level 2's
-// state (docs/navier-stokes.md §8). Its own outputs: fluid.pvd (velocity, pressure, wall
-// shear, vorticity, Q-criterion, the outlet's axis), jet.csv (the jet into the urethra per
-// voiding step, OutletJet.h) and the summary keys level, tetrahedra, max_velocity_mm_s,
-// max_wall_shear_pa, min_tet_radius_ratio, remeshes, level1_from, jet,
+// the urine mesh and a voiding step fails, the protocol hands the voiding to level 1 on the
+// same wall (LevelLadder.h, docs/navier-stokes.md §8). Its own outputs: fluid.pvd (velocity,
+// pressure, wall shear, vorticity, Q-criterion, the outlet's axis), jet.csv (the jet into the
+// urethra per voiding step, OutletJet.h) and the summary keys level, tetrahedra, max_velocity_mm_s,
+// max_wall_shear_pa, min_tet_radius_ratio, remeshes, jet,
 // newton.seconds_per_step, time_steps_s.
 #include <array>
 #include <cmath>
@@ -52,16 +52,13 @@ class NavierStokesCavity final : public CavityModel {
   void start_clock() override;
   StepResult try_step(const StepRequest& step) override;
   std::string voiding_end_note(const std::string& failure) const override;
-  // Once level 1 carries the void (below the stress-free volume), the same hand-over a
-  // level-1 run makes: its tail to the sphere-equivalent.
-  bool hand_over_voiding(const std::string& failure, double time_s) override;
-  std::vector<LevelHandOver> hand_overs() const override;
+  int level() const override { return 2; }
+  // The wall at its last converged step with its history, Pves, outflow and bookkeeping.
+  CarriedState carried_state() const override;
 
   double volume() const override;
   double pves() const override;
-  double outflow() const override {
-    return collapse_ ? collapse_->outflow() : coupling_->outflow();
-  }
+  double outflow() const override { return coupling_->outflow(); }
   double reference_volume() const override { return V_reference_; }
   const WallModel& wall() const override { return wall_; }
   std::vector<Eigen::Vector3d> wall_positions() const override;
@@ -78,9 +75,7 @@ class NavierStokesCavity final : public CavityModel {
   bool saves_state() const override { return true; }
   void save_state(CheckpointWriter& out) const override;
   void restore_state(CheckpointReader& in) override;
-  std::string progress_label() const override {
-    return collapse_ ? " (level 1 below the stress-free volume)" : " (level 2)";
-  }
+  std::string progress_label() const override { return " (level 2)"; }
 
  private:
   WallLoads step_loads(const StepRequest& step) const;
@@ -88,8 +83,6 @@ class NavierStokesCavity final : public CavityModel {
   double mesh_quality() const;
   void check_mesh(double time_s);
   bool remesh(double time_s, double quality);  // true when the tetrahedra were rebuilt
-  bool can_hand_over(const StepRequest& step) const;
-  void hand_over(const StepRequest& step, const std::string& failure);
   void update_max_speed();
   std::vector<Eigen::Vector3d> nodal_wall_shear(const FluidMesh& now) const;
 
@@ -102,13 +95,8 @@ class NavierStokesCavity final : public CavityModel {
   FluidProperties fluid_;
   std::unique_ptr<FluidWallCoupling> coupling_;
   std::unique_ptr<HydrostaticCavity> settler_;  // level 1, while settling to the start volume
-  // Level 1, continuing the voiding where the slack wall folds into the urine mesh below
-  // the stress-free volume (docs/navier-stokes.md §8); null before.
-  std::unique_ptr<HydrostaticCavity> collapse_;
-  ProtocolLoads committed_loads_;  // the protocol's loads of the last converged step
-  double V_start_ = 0.0;           // urine volume when the clock started (m³)
-  double collapse_time_s_ = -1.0, collapse_volume_ = 0.0;  // of the hand-over
-  std::string collapse_reason_;
+  ProtocolLoads committed_loads_;               // the protocol's loads of the last converged step
+  double V_start_ = 0.0;                        // urine volume when the clock started (m³)
   Inflow inflow_;
   std::vector<std::array<int, 3>> outlet_faces_;
   std::vector<OutletJetRow> jet_;  // one per converged step with the urethra open

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "cavity/HydrostaticCavity.h"
+#include "cavity/LevelLadder.h"
 #include "cavity/LumpedCavity.h"
 #include "fluid/NavierStokesCavity.h"
 #include "protocol/CystometryProtocol.h"
@@ -119,8 +120,10 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
     model = std::make_unique<LumpedCavity>(wall, *material, settings);
   else
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
-  CystometryResult result = CystometryProtocol(settings, options).run(*model);
-  card.hand_overs = model->hand_overs();
+  // The levels below the model's, should its voiding need them (docs/simulate.md).
+  const LevelLadder ladder(wall, *material, settings, options);
+  CystometryResult result = CystometryProtocol(settings, options).run(*model, &ladder);
+  card.hand_overs = result.card.hand_overs;
   result.card = std::move(card);
   result.summary["model_card"] = result.card;
   if (!options.output_dir.empty())

@@ -88,8 +88,9 @@ CystometryProtocol::CystometryProtocol(const ProtocolSettings& settings, const R
 
 CystometryProtocol::~CystometryProtocol() = default;
 
-CystometryResult CystometryProtocol::run(CavityModel& model) {
-  model_ = &model;
+CystometryResult CystometryProtocol::run(CavityModel& model, const LevelLadder* ladder) {
+  model_ = top_ = &model;
+  ladder_ = ladder;
   rules_ = model.rules();
   if (!options_.output_dir.empty() && options_.write_series)
     series_ = std::make_unique<VtuSeriesWriter>(options_.output_dir);
@@ -117,7 +118,7 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
     phase_seconds_["voiding"] = lap();
     result_.completed = true;
   } catch (const StepFailed& e) {
-    result_.failure = step_failure_text(time_, model.volume(), e.what());
+    result_.failure = step_failure_text(time_, model_->volume(), e.what());
     // Failed while filling: every row is filling, none is voiding.
     if (!filled_ && !result_.history.empty()) capacity_index_ = result_.history.size() - 1;
     vesica::log()->error("{}", result_.failure);
@@ -134,6 +135,7 @@ CystometryResult CystometryProtocol::run(CavityModel& model) {
   }
   if (series_) series_->finish();
   model.finish_frames();
+  for (const auto& lower : lower_) lower->finish_frames();
   summarize(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return std::move(result_);
 }
@@ -305,12 +307,9 @@ void CystometryProtocol::void_bladder() {
     try {
       iterations = advance(dt, 0.0, urethra_open_).iterations;
     } catch (const StepFailed& e) {
-      // With the urethra open a model may go on as a simpler one (the wall's tail of
-      // voiding on its sphere-equivalent); the same step is tried again on it.
-      if (urethra_open_ && model_->hand_over_voiding(e.what(), time_)) {
-        take_notes();
-        continue;
-      }
+      // With the urethra open the level below may go on (LevelLadder.h); the same step is
+      // tried again on it.
+      if (urethra_open_ && hand_over(e.what())) continue;
       const std::string note = model_->voiding_end_note(e.what());
       if (note.empty()) throw;
       result_.notes.push_back(note);
@@ -401,7 +400,7 @@ void CystometryProtocol::record() {
   result_.history.push_back(row);
   if (options_.on_progress) {
     const auto [step, fraction] = protocol_progress(row, settings_, voiding_);
-    options_.on_progress(step + model_->progress_label(), fraction);
+    options_.on_progress(step + progress_label(), fraction);
   }
   const double expected = start_volume_ + infused_ - voided_;
   mass_error_ = std::max(mass_error_, std::abs(model_->volume() - expected) / expected);
@@ -423,6 +422,47 @@ void CystometryProtocol::frame(bool force) {
   next_frame_ = time_ + (voiding_ ? rules_.void_frame_interval_s : options_.series_interval_s);
 }
 
+bool CystometryProtocol::hand_over(const std::string& failure) {
+  if (!ladder_) return false;
+  LevelLadder::Step next = ladder_->below(*model_, failure);
+  if (!next.model) return false;
+  const double volume_ml = units::ml_from_m3(model_->volume());
+  hand_overs_.push_back({model_->level(), next.model->level(), volume_ml, time_, next.reason});
+  std::ostringstream note;
+  note.precision(4);
+  note << level_name(model_->level()) << " could not go on at V = " << volume_ml
+       << " ml, t = " << time_ << " s: " << next.reason << "; from there the voiding ran on "
+       << level_name(next.model->level());
+  result_.notes.push_back(note.str());
+  vesica::log()->warn("{}", note.str());
+  lower_.push_back(std::move(next.model));
+  model_ = lower_.back().get();
+  // The level below steps by its own rules, as a run started there would.
+  rules_ = model_->rules();
+  take_notes();
+  return true;
+}
+
+// Where the run changed level, in the summary keys users and tests read: level1_from
+// (2 → 1: time and volume) and voiding_tail (→ 0: from where and why).
+void CystometryProtocol::summarize_hand_overs(nlohmann::json& s) const {
+  for (const LevelHandOver& h : hand_overs_) {
+    if (h.from == 2 && h.to == 1)
+      s["level1_from"] = {{"time_s", h.time_s}, {"volume_ml", h.volume_ml}};
+    if (h.to == 0)
+      s["voiding_tail"] = {{"model", level_name(0)},
+                           {"from_level", h.from},
+                           {"from_ml", h.volume_ml},
+                           {"wall_failure", h.reason}};
+  }
+}
+
+std::string CystometryProtocol::progress_label() const {
+  const std::string own = model_->progress_label();
+  if (hand_overs_.empty() || !own.empty()) return own;
+  return " (level " + std::to_string(model_->level()) + ")";
+}
+
 void CystometryProtocol::take_notes() {
   for (std::string& note : model_->take_notes()) result_.notes.push_back(std::move(note));
 }
@@ -432,13 +472,18 @@ void CystometryProtocol::summarize(double seconds) {
   s["completed"] = result_.completed;
   if (!result_.notes.empty()) s["notes"] = result_.notes;
   if (!result_.completed) s["failure"] = result_.failure;
-  s["triangles"] = model_->wall().triangle_count();
-  s["nodes"] = model_->wall().node_count();
-  s["reference_volume_ml"] = units::ml_from_m3(model_->reference_volume());
+  s["triangles"] = top_->wall().triangle_count();
+  s["nodes"] = top_->wall().node_count();
+  s["reference_volume_ml"] = units::ml_from_m3(top_->reference_volume());
   summarize_history(result_.history, capacity_index_, s);
   s["max_wall_stress_kpa"] = units::kpa_from_pa(max_stress_);
   s["mass_balance_error_max_rel"] = mass_error_;
-  s["newton"] = model_->statistics();
+  s["newton"] = top_->statistics();
+  for (const auto& lower : lower_) {  // the levels handed down to
+    nlohmann::json level = lower->statistics();
+    level["level"] = lower->level();
+    s["newton"]["after_hand_over"].push_back(std::move(level));
+  }
   s["compute_s"] = seconds;
   s["phase_compute_s"] = phase_seconds_;
   s["outlet"] = {{"p_open_cmh2o", settings_.p_open_cmh2o},
@@ -453,7 +498,10 @@ void CystometryProtocol::summarize(double seconds) {
   // (straining included in the drive's name).
   if (voiding_) s["voiding_pabd"] = settings_.voiding_pabd.empty() ? "resting" : "recorded";
   if (voiding_) s["pves_max_voiding_cmh2o"] = units::cmh2o_from_pa(peak_pves_);
-  model_->add_summary(s);
+  top_->add_summary(s);
+  summarize_hand_overs(s);
+  for (const auto& lower : lower_) lower->add_summary(s);
+  result_.card.hand_overs = hand_overs_;
 }
 
 }  // namespace vesica::simulate

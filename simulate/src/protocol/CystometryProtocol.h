@@ -5,16 +5,19 @@
 // along ActivationCurve.h) and void through the urethra law (docs/physics.md §5), which
 // opens and closes, until the flow stops. It owns the clock, the
 // time-dependent loads, the infused and voided volumes, the history rows, the frames'
-// schedule, the cut-backs of failed steps (halving up to the model's limit) and the
-// summary; the model only steps and reports its state.
+// schedule, the cut-backs of failed steps (halving up to the model's limit), the hand-over
+// of a void a model cannot go on with to the level below (LevelLadder.h) and the summary;
+// the model only steps and reports its state.
 #include <cstddef>
 #include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cavity/CavityModel.h"
+#include "cavity/LevelLadder.h"
 #include "cavity/UrethraLaw.h"
 #include "protocol/ActivationCurve.h"
 #include "vesica/simulate/protocol/CheckpointFile.h"
@@ -34,9 +37,11 @@ class CystometryProtocol {
   ~CystometryProtocol();
 
   // Runs the whole protocol on the model and writes the wall's series when options ask
-  // (history.csv is the caller's). A step that fails after cut-backs ends the run with
-  // completed = false and the history so far.
-  CystometryResult run(CavityModel& model);
+  // (history.csv is the caller's). With a ladder, a voiding step that fails after its
+  // cut-backs with the urethra open hands the rest of the voiding to the level below
+  // (hand_over); the result's card lists every hand-over. A step that fails otherwise ends
+  // the run with completed = false and the history so far.
+  CystometryResult run(CavityModel& model, const LevelLadder* ladder = nullptr);
 
   // Checkpoints (docs/simulate.md, "Checkpoint and resume"; CystometryProtocolState.cpp):
   // the protocol's state between two steps, the model's after it.
@@ -62,6 +67,11 @@ class CystometryProtocol {
   double next_void_step(double dt, double dV, double flow_change, int iterations) const;
   bool contraction_spent(double p_before) const;
   ProtocolLoads loads_at(double t) const;
+  // The one place a run changes level: the model one level down carries on from the
+  // present one's state; false where there is none.
+  bool hand_over(const std::string& failure);
+  void summarize_hand_overs(nlohmann::json& summary) const;
+  std::string progress_label() const;
   void record();
   void frame(bool force);
   void take_notes();
@@ -82,7 +92,11 @@ class CystometryProtocol {
   UrethraLaw urethra_now_ = urethra_;  // urethra_ as it recovers (physics.md §5), for one step
   double volume_at_opening_ = 0.0;     // m³
   const ActivationCurve activation_;
-  CavityModel* model_ = nullptr;
+  CavityModel* model_ = nullptr;  // the model running now: top_ or the last of lower_
+  CavityModel* top_ = nullptr;    // the model the run started with
+  const LevelLadder* ladder_ = nullptr;
+  std::vector<std::unique_ptr<CavityModel>> lower_;  // the levels handed down to, in order
+  std::vector<LevelHandOver> hand_overs_;
   StepRules rules_;
   std::unique_ptr<VtuSeriesWriter> series_;
   CystometryResult result_;

@@ -72,8 +72,8 @@ struct RunNumerics {
 
 // A hand-over between levels of the model (docs/simulate.md, "Levels and their
 // hand-overs"): the run went on from `from` as `to` at this volume and time, and why.
-// Today: the level-1 wall's tail of voiding on its level-0 sphere-equivalent, and level 2's
-// voiding below the stress-free volume on level 1.
+// The protocol makes one where a voiding step fails after its cut-backs with the urethra
+// open: level 2 to level 1 on the same wall, level 1 to its level-0 sphere-equivalent.
 struct LevelHandOver {
   int from = 0;
   int to = 0;
