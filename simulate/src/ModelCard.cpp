@@ -20,6 +20,7 @@ RunNumerics numerics_of(const RunOptions& o) {
   RunNumerics n;
   n.level = o.level;
   n.dynamic = o.dynamic;
+  n.hand_over = o.hand_over;
   n.bossak_alpha = o.bossak_alpha;
   n.max_fill_step_ml = o.max_fill_step_ml;
   n.max_void_step_s = o.max_void_step_s;
@@ -38,6 +39,7 @@ RunNumerics numerics_of(const RunOptions& o) {
 void apply_numerics(const RunNumerics& n, RunOptions& o) {
   o.level = n.level;
   o.dynamic = n.dynamic;
+  o.hand_over = n.hand_over;
   o.bossak_alpha = n.bossak_alpha;
   o.max_fill_step_ml = n.max_fill_step_ml;
   o.max_void_step_s = n.max_void_step_s;
@@ -121,7 +123,10 @@ std::vector<std::string> model_card_lines(const ModelCard& c) {
       " cmH2O*s2/ml2, half open " + short_number(p.urethra_half_open_cmh2o) + " cmH2O, recovery " +
       short_number(p.urethra_recovery_half));
   std::string level = "level " + std::to_string(c.numerics.level);
-  if (c.hand_overs.empty()) level += ", no hand-over";
+  if (!c.numerics.hand_over)
+    level += ", hand-overs off";
+  else if (c.hand_overs.empty())
+    level += ", no hand-over";
   for (const LevelHandOver& h : c.hand_overs) level += "; hand-over " + hand_over_text(h);
   lines.push_back(level);
   lines.push_back(

@@ -45,6 +45,7 @@ class Reader {
     if (!v.is_boolean()) bad(key, "is not true or false");
     return v.get<bool>();
   }
+  bool flag_or(const char* key, bool absent) const { return j_.contains(key) ? flag(key) : absent; }
   std::string text(const char* key) const {
     const json& v = at(key);
     if (!v.is_string()) bad(key, "is not text");
@@ -282,6 +283,7 @@ void level_from(const Reader& r, ModelCard& c) {
 
 json numerics_json(const RunNumerics& n) {
   return {{"dynamic", n.dynamic},
+          {"hand_over", n.hand_over},
           {"bossak_alpha", n.bossak_alpha},
           {"max_fill_step_ml", n.max_fill_step_ml},
           {"max_void_step_s", n.max_void_step_s},
@@ -299,6 +301,8 @@ json numerics_json(const RunNumerics& n) {
 
 void numerics_from(const Reader& r, RunNumerics& n) {
   n.dynamic = r.flag("dynamic");
+  // Cards written before the switch existed ran with the fallback.
+  n.hand_over = r.flag_or("hand_over", true);
   n.bossak_alpha = r.number("bossak_alpha");
   n.max_fill_step_ml = r.number("max_fill_step_ml");
   n.max_void_step_s = r.number("max_void_step_s");

@@ -206,6 +206,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
   t.flag("dynamic", r.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
   t.number("bossak_alpha", r.bossak_alpha, "-", NumberRange::at_least(-1.0 / 3.0).at_most(0),
            "Bossak alpha (0: no numerical damping)");
+  t.flag_off("no_hand_over", r.hand_over,
+             "a voiding step the running level cannot take ends voiding there, instead of "
+             "handing the rest to the level below (the fallback: level 2 to 1, 1 to its "
+             "sphere-equivalent)");
   t.integer("level", r.level, "-", NumberRange::at_least(0).at_most(2),
             "0: lumped sphere-equivalent bladder (milliseconds); 1: urine as a hydrostatic "
             "volume (seconds); 2: Navier-Stokes urine on the tetrahedra of vesica-mesh "

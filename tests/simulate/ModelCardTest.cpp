@@ -75,6 +75,7 @@ ModelCard unusual_card() {
   RunNumerics& n = c.numerics;
   n.level = 2;
   n.dynamic = true;
+  n.hand_over = false;
   n.bossak_alpha = -0.2;
   n.max_fill_step_ml = 5.0;
   n.max_void_step_s = 0.25;
@@ -151,6 +152,7 @@ void expect_same(const ModelCard& a, const ModelCard& b) {
   const RunNumerics &m = a.numerics, &n = b.numerics;
   EXPECT_EQ(m.level, n.level);
   EXPECT_EQ(m.dynamic, n.dynamic);
+  EXPECT_EQ(m.hand_over, n.hand_over);
   EXPECT_EQ(m.bossak_alpha, n.bossak_alpha);
   EXPECT_EQ(m.max_fill_step_ml, n.max_fill_step_ml);
   EXPECT_EQ(m.max_void_step_s, n.max_void_step_s);

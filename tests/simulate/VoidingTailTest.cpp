@@ -193,6 +193,33 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
               0.03 * whole.summary["qmax_ml_s"].get<double>());
 }
 
+// The fallback is labelled and can be switched off (--no-hand-over): the void then ends
+// where the wall stopped, with a note, and the card says no hand-over was allowed.
+TEST(VoidingTail, WithTheHandOverOffTheVoidEndsWhereTheWallStopped) {
+  const WallModel wall = sphere();
+  const ProtocolSettings p = protocol();
+  RunOptions o;
+  o.hand_over = false;
+  const std::unique_ptr<Material> material = make_material({"bladder", {}});
+  HydrostaticCavity cavity(wall, *material, p, o);
+  FailingModel failing(cavity, units::m3_from_ml(175.0));
+  const LevelLadder ladder(wall, *material, p, o);
+  const CystometryResult r = CystometryProtocol(p, o).run(failing, &ladder);
+  ASSERT_TRUE(r.completed) << r.failure;
+  EXPECT_TRUE(r.card.hand_overs.empty());
+  EXPECT_FALSE(r.summary.contains("voiding_tail"));
+  // The last row is where the wall stopped: the first below 175 ml, and what is left.
+  const HistoryRow& last = r.history.back();
+  EXPECT_LT(last.volume_ml, 175.0);
+  EXPECT_GT(last.volume_ml, 150.0);
+  EXPECT_NEAR(r.summary["pvr_ml"].get<double>(), last.volume_ml, 1e-6);
+  ASSERT_TRUE(r.summary.contains("notes"));
+  EXPECT_NE(r.summary["notes"].dump().find("hand-over to a simpler level being off"),
+            std::string::npos)
+      << r.summary["notes"];
+  expect_mass_balance(r);
+}
+
 // The protocol alone decides a hand-over, whatever level the run started at: a level-2 run
 // whose Navier–Stokes voiding is made to fail below 100 ml goes on at level 1, whose wall is
 // made to fail below 80 ml in turn and goes on at level 0, each from the state of the level

@@ -309,8 +309,12 @@ void CystometryProtocol::void_bladder() {
     } catch (const StepFailed& e) {
       // With the urethra open the level below may go on (LevelLadder.h); the same step is
       // tried again on it.
-      if (urethra_open_ && hand_over(e.what())) continue;
-      const std::string note = model_->voiding_end_note(e.what());
+      if (urethra_open_ && options_.hand_over && hand_over(e.what())) continue;
+      std::string note = model_->voiding_end_note(e.what());
+      if (note.empty() && urethra_open_ && !options_.hand_over)
+        note = "voiding ended at " + std::to_string(units::ml_from_m3(model_->volume())) +
+               " ml, where the wall could not take a step (" + e.what() +
+               "), the hand-over to a simpler level being off";
       if (note.empty()) throw;
       result_.notes.push_back(note);
       vesica::log()->warn("{}", note);

@@ -129,6 +129,11 @@ struct RunOptions {
   // quasi-static steps; α_B ∈ [-1/3, 0] (0: no numerical damping).
   bool dynamic = false;
   double bossak_alpha = -0.1;
+  // A voiding step the running level cannot take, after its cut-backs and with the urethra
+  // open, hands the rest of the voiding to the level below (2 → 1 → 0; docs/simulate.md,
+  // "Levels and their hand-overs"): the fallback. false: voiding ends there instead, with
+  // a note, so that the wall's own void is what the results show.
+  bool hand_over = true;
   ReferenceState reference = ReferenceState::Scale;
   // The wall-and-cavity Newton of level 1 (and of level 2's settling to the start volume).
   // Chord iterations while the residual falls tenfold per iteration: fewer factorizations
