@@ -138,12 +138,11 @@ struct RunOptions {
   // all its iterations. Converged at a residual of 1e-7 of the gross pressure force and a
   // last increment of 1e-6 of the wall's size (sub-micrometre on a bladder): the
   // defaults' extra digits cost many iterations of the slack collapse at the end of
-  // voiding and change no reported result. Factorizations reused across iterations and
-  // steps as the preconditioner of the current tangent (NewtonOptions.h).
+  // voiding and change no reported result. No preconditioned reuse (NewtonOptions.h): on
+  // a wrinkling wall GMRES misses its tolerance too often for it to pay (docs/simulate.md).
   NewtonOptions newton = [] {
     NewtonOptions o;
     o.reuse_tangent_ratio = 0.1;
-    o.preconditioned_reuse.max_iterations = 8;
     o.max_iterations = 25;
     o.residual_tolerance = 1e-7;
     o.increment_tolerance = 1e-6;
