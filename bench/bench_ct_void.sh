@@ -3,8 +3,10 @@
 # CT bladder meshed at five sizes (issue 33): whether the wall carries the void to its end
 # itself (no hand-over between model levels), how much PVR and Qmax move with the mesh, and
 # how the compute time grows with the triangle count (the exponent p of t ~ n^p between
-# neighbouring sizes). Usage: bench_ct_void.sh BUILD_DIR [TRIANGLES...]. Prints one JSON
-# object; needs ../shared/data/ct beside the checkout.
+# neighbouring sizes). Each mesh is also simulated with a new factorization for every Newton
+# increment (--newton-krylov-solves 0, the code before issue 36), in the same run, for the
+# speed-up; VESICA_BENCH_PRESENT=0 leaves that out. Usage: bench_ct_void.sh BUILD_DIR
+# [TRIANGLES...]. Prints one JSON object; needs ../shared/data/ct beside the checkout.
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 shift || true
@@ -24,6 +26,13 @@ for n in "${sizes[@]}"; do
   "$build/bin/vesica-surface" "$label" -o "$d/wall.vtp" --target-triangles "$n" --outlet auto \
     --outlet-radius-mm 12 > /dev/null 2>&1
   "$build/bin/vesica-mesh" "$d/wall.vtp" -o "$d/wall.msh" --report "$d/mesh.json" > /dev/null 2>&1
+  if [ "${VESICA_BENCH_PRESENT:-1}" = 1 ]; then
+    t0=$(date +%s%N)
+    "$build/bin/vesica-simulate" "$d/wall.vtu" -o "$d/present" --no-series --json \
+      --newton-krylov-solves 0 > /dev/null 2>&1 || true
+    t1=$(date +%s%N)
+    echo $(( (t1 - t0) / 1000000 )) > "$d/present_ms"
+  fi
   t0=$(date +%s%N)
   "$build/bin/vesica-simulate" "$d/wall.vtu" -o "$d/sim" --no-series --json > /dev/null 2>&1 || true
   t1=$(date +%s%N)
@@ -35,6 +44,14 @@ work, sizes = sys.argv[1], sys.argv[2:]
 rows = []
 for n in sizes:
     d = f"{work}/{n}"
+    present = {}
+    try:
+        p = json.load(open(f"{d}/present/summary.json"))
+        present = {"present_code_seconds": int(open(f"{d}/present_ms").read()) / 1000.0,
+                   "present_code_qmax_ml_s": p.get("qmax_ml_s"),
+                   "present_code_pvr_ml": p.get("pvr_ml")}
+    except (OSError, ValueError):
+        pass
     try:
         s = json.load(open(f"{d}/sim/summary.json"))
     except (OSError, ValueError):
@@ -47,7 +64,7 @@ for n in sizes:
                  "triangles": sum(mesh.get("region_triangle_counts", {}).values()) or None,
                  "seconds": int(open(f"{d}/ms").read()) / 1000.0,
                  "completed": s.get("completed"), "qmax_ml_s": s.get("qmax_ml_s"),
-                 "pvr_ml": s.get("pvr_ml"), "hand_overs": hand_overs})
+                 "pvr_ml": s.get("pvr_ml"), "hand_overs": hand_overs, **present})
 ok = [r for r in rows if r.get("completed")]
 for a, b in zip(ok, ok[1:]):
     if a["triangles"] and b["triangles"] and a["seconds"] > 0:

@@ -107,19 +107,35 @@ def mesh(d):
                  f"{num(d.get('volume_ml'), 4)} ml"))
 
 
+def present_code_text(d):
+    """The same case with a new factorization every Newton increment (the code before issue
+    36), timed in the same run: "present code 2.3 s, 2.3× faster"."""
+    before = d.get("present_code_seconds")
+    if before is None or not d.get("seconds"):
+        return None
+    return f"present code {seconds(before)} in the same run, {num(before / d['seconds'], 2)}× faster"
+
+
 def balloon(d):
     return (f"{num(d.get('triangles'))} triangles, {d.get('steps', '?')} pressure steps",
             d.get("seconds"), d.get("target_seconds"),
             join(f"{num(d.get('newton_iterations'))} Newton iterations",
-                 None if d.get("converged", True) else "did not converge"))
+                 None if d.get("converged", True) else "did not converge",
+                 present_code_text(d)))
+
+
+def cystometry_results(d):
+    return join(newton_text(d.get("newton")),
+                f"Pdet at capacity {num(d.get('pdet_at_capacity_cmh2o'), 5)} cmH2O",
+                f"Qmax {num(d.get('qmax_ml_s'), 4)} ml/s", f"PVR {num(d.get('pvr_ml'))} ml",
+                None if d.get("completed", True) else f"failed: {d.get('failure')}")
 
 
 def cystometry(d):
+    before = d.get("present_code")
     return (f"{num(d.get('triangles'))} triangles", d.get("seconds"), d.get("target_seconds"),
-            join(newton_text(d.get("newton")),
-                 f"Pdet at capacity {num(d.get('pdet_at_capacity_cmh2o'), 5)} cmH2O",
-                 f"Qmax {num(d.get('qmax_ml_s'), 4)} ml/s", f"PVR {num(d.get('pvr_ml'))} ml",
-                 None if d.get("completed", True) else f"failed: {d.get('failure')}"))
+            join(cystometry_results(d), present_code_text(d),
+                 f"present code: {cystometry_results(before)}" if before else None))
 
 
 def level2(d):
@@ -229,7 +245,13 @@ def ct_void(d):
             join("no hand-over at any size" if d.get("no_hand_over_anywhere") else "hand-overs",
                  f"PVR spread {num(d.get('pvr_spread_ml'))} ml",
                  f"Qmax spread {num(d.get('qmax_spread_percent'))} %",
-                 f"time ~ n^{num(exponent, 2)}" if exponent else None))
+                 f"time ~ n^{num(exponent, 2)}" if exponent else None,
+                 "each size " + ", ".join(
+                     f"{m.get('triangles') or m.get('target_triangles'):,}: "
+                     f"{seconds(m.get('seconds'))}"
+                     + (f" (present code {seconds(m['present_code_seconds'])} in the same run)"
+                        if m.get("present_code_seconds") else "")
+                     for m in meshes) if meshes else None))
 
 
 def verification(runs):
@@ -239,6 +261,10 @@ def verification(runs):
     details = join(*[f"{law}: {seconds(r.get('seconds'))}, {r.get('newton_iterations')} Newton "
                      f"iterations, {r.get('foundation_iterations')} on the foundation"
                      + ("" if r.get("completed") else ", did not complete")
+                     + (f" (present code {seconds(r['present_code_seconds'])} in the same run, "
+                        f"{r.get('present_code_newton_iterations')} iterations, "
+                        f"{num(r['present_code_seconds'] / r['seconds'], 2)}× faster)"
+                        if r.get("present_code_seconds") and r.get("seconds") else "")
                      for law, r in by_law.items()])
     return f"{runs[0].get('triangles'):,} triangles, 20 pressure steps", measured, None, details
 

@@ -4,6 +4,10 @@
 //    triangles (neo-Hookean μ = 3 kPa, K = 1000 μ, voided by straining), no output files;
 //  - lumped: the default bladder's whole cystometry (50 → 350 ml, voided by the detrusor)
 //    at level 0, repeated: what one simulation of calibration's global search costs.
+// The balloon and the cystometries run twice in the same process: as the code runs them
+// ("seconds") and with a new factorization for every Newton increment as before issue 36
+// (preconditioned reuse off: "present_code_seconds"), so that the speed-up is measured on
+// the same machine at the same load, and their results side by side.
 // Usage: bench_simulate [balloon|cystometry-small|cystometry-large|balloon-and-small|lumped|all]
 #include <chrono>
 #include <cmath>
@@ -27,14 +31,38 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-nlohmann::json balloon() {
+// The Newton settings of a row: as the code runs it, or with the factorization reuse of
+// issue 36 switched off (the code before it).
+NewtonOptions without_preconditioned_reuse(NewtonOptions o) {
+  o.preconditioned_reuse.max_iterations = 0;
+  return o;
+}
+
+// The row of `run(reuse)` with its time without the reuse beside it: run first without, so
+// that the row as the code runs it never benefits from a warmer machine.
+template <class Run>
+nlohmann::json with_present_code(const Run& run) {
+  const nlohmann::json present = run(false);
+  nlohmann::json j = run(true);
+  j["present_code_seconds"] = present["seconds"];
+  j["speedup"] = present["seconds"].get<double>() / j["seconds"].get<double>();
+  nlohmann::json results = present;
+  results.erase("seconds");
+  results.erase("target_seconds");
+  j["present_code"] = results;
+  return j;
+}
+
+nlohmann::json balloon(bool reuse) {
   const double R = 0.0229, H = 3e-3, mu = 5e3;
   WallModel wall = sphere_wall(R, H, 25);
   fix_sphere_rigid_modes(wall);
   const auto material = make_material({"neo-hookean", {{"mu", mu}, {"K", 1e3 * mu}}});
   const auto t0 = std::chrono::steady_clock::now();
   MembraneProblem problem(wall, *material, 2);
-  NewtonSolver solver(problem);
+  NewtonOptions options;
+  options.preconditioned_reuse.max_iterations = 8;
+  NewtonSolver solver(problem, reuse ? options : without_preconditioned_reuse(options));
   WallLoads loads;
   std::vector<Eigen::Vector3d> x = wall.nodes;
   const double l = std::pow(7.0, 1.0 / 6.0);
@@ -54,7 +82,7 @@ nlohmann::json balloon() {
           {"seconds", seconds_since(t0)},       {"target_seconds", 2.0}};
 }
 
-nlohmann::json cystometry(int n, double target_s) {
+nlohmann::json cystometry(int n, double target_s, bool reuse) {
   // A sphere enclosing the 50 ml residual volume with its south cap held (the base).
   const double R = std::cbrt(3.0 * units::m3_from_ml(50.0) / (4.0 * 3.14159265358979));
   WallModel wall = sphere_wall(R, 3e-3, n);
@@ -68,6 +96,9 @@ nlohmann::json cystometry(int n, double target_s) {
   p.drive = VoidingDrive::Straining;  // as the figures before the detrusor drive
   p.straining_kpa = 4.0;
   RunOptions o;
+  // Level 1 runs without the reuse by default (it measured slower there): the row times it
+  // switched on, beside the default.
+  o.newton.preconditioned_reuse.max_iterations = reuse ? 8 : 0;
   const auto t0 = std::chrono::steady_clock::now();
   const CystometryResult r =
       run_cystometry(wall, {"neo-hookean", {{"mu", 3e3}, {"K_per_mu", 1e3}}}, p, o);
@@ -107,11 +138,13 @@ int main(int argc, char** argv) {
   const std::string what = argc > 1 ? argv[1] : "all";
   nlohmann::json out;
   if (what == "balloon" || what == "all" || what == "balloon-and-small")
-    out["balloon_5000_triangles"] = balloon();
+    out["balloon_5000_triangles"] = with_present_code(balloon);
   if (what == "cystometry-small" || what == "all" || what == "balloon-and-small")
-    out["cystometry_2300_triangles"] = cystometry(17, 10.0);
+    out["cystometry_2300_triangles"] =
+        with_present_code([](bool reuse) { return cystometry(17, 1.0, reuse); });
   if (what == "cystometry-large" || what == "all")
-    out["cystometry_17000_triangles"] = cystometry(46, 60.0);
+    out["cystometry_17000_triangles"] =
+        with_present_code([](bool reuse) { return cystometry(46, 10.0, reuse); });
   if (what == "lumped" || what == "all" || what == "balloon-and-small")
     out["lumped_default_bladder"] = lumped(20);
   std::cout << out.dump(2) << std::endl;

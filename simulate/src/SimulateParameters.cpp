@@ -214,6 +214,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
             "0: lumped sphere-equivalent bladder (milliseconds); 1: urine as a hydrostatic "
             "volume (seconds); 2: Navier-Stokes urine on the tetrahedra of vesica-mesh "
             "--fluid (velocity, wall shear; minutes)");
+  t.integer("newton_krylov_solves", r.newton.preconditioned_reuse.max_iterations, "-",
+            NumberRange::at_least(0).at_most(50),
+            "level 1: GMRES solves per Newton increment on a reused factorization before a new "
+            "one (0: a factorization every increment)");
   t.number("fluid_dt_s", r.level2.fill_dt_s, "s",
            NumberRange::at_least(1e-3).at_most(60).or_value(
                0, "adaptive: growing after easy steps up to max_fill_step_ml"),

@@ -73,11 +73,15 @@ NewtonReport NewtonLoop::solve(NewtonSystem& system) {
       // Tangent reuse (modified Newton): with the wall already in equilibrium only a small
       // correction is left, and the last tangent, from this solve or the converged state of
       // the previous one, serves it as well as a new factorization; optionally also while
-      // the residual falls fast (chord iterations). Never on the foundation.
+      // the residual falls fast (chord iterations), or always as the preconditioner of the
+      // current tangent, which falls back to a new factorization itself where it does not
+      // serve. Never on the foundation.
       const auto& norms = report.residual_norms;
       const bool converging_fast = it >= 1 && norms.size() > static_cast<std::size_t>(it) &&
                                    norms[it] <= options_.reuse_tangent_ratio * norms[it - 1];
-      const bool reuse = (equilibrium || converging_fast) && reusable && eta_ == 0.0;
+      const bool preconditioned = options_.preconditioned_reuse.max_iterations > 0;
+      const bool reuse =
+          (equilibrium || converging_fast || preconditioned) && reusable && eta_ == 0.0;
       double move = regularized_increment(system, reuse, reusable, report);
       if (!report.failure.empty()) {
         report.iterations = it + 1;
@@ -119,7 +123,7 @@ double NewtonLoop::regularized_increment(NewtonSystem& system, bool reuse, bool&
       eta_in_K = eta;
     }
     if (!system.solve_increment(reuse && raise == 0, report.failure)) return 0.0;
-    reusable = true;
+    reusable = system.factorization_reusable();
     move = system.increment_move();
     if (max_move <= 0.0 || move <= max_move || raise == f.max_raises) break;
     eta = eta > 0.0 ? f.raise_factor * eta : f.first_stiffness * scale;

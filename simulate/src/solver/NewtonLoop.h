@@ -62,6 +62,9 @@ class NewtonSystem {
   // The increment: tangent⁻¹ (−residual); reuse: solve with the last factorization instead
   // of factorizing tangent(). Returns false with the reason, or throws std::runtime_error.
   virtual bool solve_increment(bool reuse, std::string& failure) = 0;
+  // After solve_increment: whether its factorization may serve later increments (false
+  // where it is already known to be far from the tangent).
+  virtual bool factorization_reusable() const { return true; }
   // The longest move of a wall node in the increment (m); 0 without a wall.
   virtual double increment_move() const = 0;
   // The move this iteration's equations demand of the wall (m), e.g. a cavity's volume

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "solver/LinearSolver.h"
+#include "solver/PreconditionedGmres.h"
 #include "vesica/core/Log.h"
 
 namespace vesica::simulate {
@@ -91,17 +92,30 @@ class NewtonSolver::System final : public NewtonSystem {
   // The bordered step by the Schur complement of K.
   bool solve_increment(bool reuse, std::string& failure) override {
     const WallAssembly& A = assembly_;
-    if (!reuse && !lu_.factorize(A.K)) {
-      failure = "singular tangent matrix";
-      return false;
-    }
+    const bool preconditioned = options_.preconditioned_reuse.max_iterations > 0;
     // u_p is needed whenever p0 changes: always under volume control, under pressure
-    // control only until p0 equals the prescribed pressure.
-    const bool need_u_p = cavity_.volume_control || c_ != 0.0;
+    // control only until p0 equals the prescribed pressure. There Δp0 = −c is known, and
+    // where each right-hand side costs GMRES solves (preconditioned reuse) the increment
+    // is one: Δu = −K⁻¹ (r + Δp0 ∂r/∂p0).
+    const bool combined = preconditioned && !cavity_.volume_control;
+    const bool need_u_p = (cavity_.volume_control || c_ != 0.0) && !combined;
     Eigen::MatrixXd B(A.residual.size(), need_u_p ? 2 : 1);
-    B.col(0) = -A.residual;
+    B.col(0) =
+        combined ? Eigen::VectorXd(c_ * A.dr_dp0 - A.residual) : Eigen::VectorXd(-A.residual);
     if (need_u_p) B.col(1) = -A.dr_dp0;
-    const Eigen::MatrixXd U = lu_.solve(B);
+    Eigen::MatrixXd U;
+    stale_ = false;
+    if (!reuse || (preconditioned && !preconditioned_solve(B, U))) {
+      if (!lu_.factorize(A.K)) {
+        failure = "singular tangent matrix";
+        return false;
+      }
+      U = lu_.solve(B);
+      stale_ = false;
+    } else if (!preconditioned) {
+      U = lu_.solve(B);
+    }
+    if (need_u_p) u_p_ = U.col(1);
     dp_ = 0.0;
     if (cavity_.volume_control) {
       const double denom = A.dV_du.dot(U.col(1)) + dc_dp_;
@@ -120,6 +134,8 @@ class NewtonSolver::System final : public NewtonSystem {
     }
     return true;
   }
+
+  bool factorization_reusable() const override { return !stale_; }
 
   double increment_move() const override { return du_.size() ? du_.cwiseAbs().maxCoeff() : 0.0; }
 
@@ -155,6 +171,27 @@ class NewtonSolver::System final : public NewtonSystem {
   void keep_trial() override { std::swap(assembly_, trial_); }
 
  private:
+  // U = K⁻¹ B by GMRES preconditioned by the last factorization (NewtonOptions.h); false
+  // where a column does not meet the tolerance. stale_: the factorization is far enough
+  // from K that the next increment factorizes afresh.
+  bool preconditioned_solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& U) {
+    const PreconditionedReuseOptions& o = options_.preconditioned_reuse;
+    const auto precondition = [this](const Eigen::VectorXd& v) -> Eigen::VectorXd {
+      return lu_.solve(v);
+    };
+    U.resize(B.rows(), B.cols());
+    for (Eigen::Index j = 0; j < B.cols(); ++j) {
+      // u_p's right-hand side, ∂r/∂p0, changes little from one iteration to the next.
+      Eigen::VectorXd x = j == 1 ? u_p_ : Eigen::VectorXd();
+      const GmresResult r = preconditioned_gmres(assembly_.K, precondition, B.col(j), o.tolerance,
+                                                 o.max_iterations, x);
+      if (!r.converged) return false;
+      stale_ = stale_ || r.iterations > o.refactorize_after;
+      U.col(j) = x;
+    }
+    return true;
+  }
+
   double merit(const WallAssembly& a, double p0) const {
     const double r = a.residual.norm() / r_ref_, c = cavity_residual(cavity_, a, p0) / c_ref_;
     return r * r + c * c;
@@ -169,6 +206,8 @@ class NewtonSolver::System final : public NewtonSystem {
   WallLoads& loads_;
   std::vector<Eigen::Vector3d>& x_;
   double c_ = 0.0, dc_dp_ = 0.0;  // cavity residual at the iterate and dc/dp0
+  bool stale_ = false;            // the last increment's factorization (preconditioned_solve)
+  Eigen::VectorXd u_p_;           // −K⁻¹ ∂r/∂p0 of the last increment
   Eigen::VectorXd du_;            // the increment (free dofs, m) and of p0 (Pa)
   double dp_ = 0.0;
   // Line search: the start iterate, the references of the merit and the trial assembly.

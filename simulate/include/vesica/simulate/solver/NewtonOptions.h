@@ -37,6 +37,21 @@ struct LineSearchOptions {
   int max_halvings = 4;  // the shortest step is 2⁻⁴ of Newton's, taken even if the merit rose
 };
 
+// Preconditioned reuse of a factorization (inexact Newton; the wall with its cavity): an
+// iteration that may reuse the last factorization of the tangent solves with the current
+// tangent by GMRES preconditioned by that factorization (solver/PreconditionedGmres.h)
+// instead of a new one, across iterations and steps. The increment is Newton's to the
+// linear tolerance, so the iteration converges as with fresh factorizations. Where the
+// tangent has moved too far (a wrinkling wall's elements switching between slack and taut,
+// the limit point) GMRES does not reach the tolerance within max_iterations and the
+// tangent is factorized afresh; one that needed more than refactorize_after solves is
+// factorized afresh at the next iteration, before the reuse gets expensive.
+struct PreconditionedReuseOptions {
+  int max_iterations = 0;  // preconditioner solves per right-hand side (0: off, chord reuse)
+  int refactorize_after = 4;
+  double tolerance = 1e-10;  // |K Δu + r| / |r| of each linear solve
+};
+
 struct NewtonOptions {
   int max_iterations = 15;
   // Iterations whose step needed the foundation are pseudo-time steps towards equilibrium:
@@ -52,6 +67,7 @@ struct NewtonOptions {
   // quadratic convergence). A factorization of the indefinite K past the limit point costs
   // several assemblies, so a cystometry's time steps reuse it (RunOptions::newton).
   double reuse_tangent_ratio = 0.0;
+  PreconditionedReuseOptions preconditioned_reuse;
 
   // Convergence. Each system tests what it has (NewtonSolver.h, FluidWallCoupling.h):
   double residual_tolerance = 1e-9;   // wall + cavity: |r| / gross force scale

@@ -13,6 +13,10 @@ struct VerificationSettings {
   double max_pressure_cmh2o = 4.0;  // pressure-steps: the last pressure
   double max_stretch = 1.5;         // volume-steps: the last λ = (V/V0)^(1/3)
   int max_cutbacks = 8;             // halvings of the step after failures, in all
+  // Newton's factorizations reused as preconditioners of later tangents, at most this many
+  // solves per increment (NewtonOptions::preconditioned_reuse; 0: a new factorization for
+  // every increment).
+  int preconditioned_reuse_iterations = 8;
 };
 
 inline bool is_verification(const VerificationSettings& settings) {
