@@ -8,28 +8,13 @@
 #include <cmath>
 #include <vector>
 
+#include "ChainMatrix.h"
 #include "solver/LinearSolver.h"
 
 using vesica::simulate::LinearSolver;
+using vesica::test::chain;
 
 namespace {
-
-// 1-D Laplacian (2, -1) of size n with `shift` subtracted on the diagonal and a
-// skew-symmetric coupling `skew` between neighbours (a convection-like term).
-Eigen::SparseMatrix<double> chain(int n, double shift, double skew) {
-  std::vector<Eigen::Triplet<double>> t;
-  for (int i = 0; i < n; ++i) {
-    t.emplace_back(i, i, 2.0 - shift);
-    if (i + 1 < n) {
-      t.emplace_back(i, i + 1, -1.0 + skew);
-      t.emplace_back(i + 1, i, -1.0 - skew);
-    }
-  }
-  Eigen::SparseMatrix<double> K(n, n);
-  K.setFromTriplets(t.begin(), t.end());
-  K.makeCompressed();
-  return K;
-}
 
 // A known solution with two columns (two right-hand sides, as Newton's bordered solve).
 // K with row and column i set to zero (entries kept): singular, same pattern.

@@ -134,6 +134,18 @@ ProtocolSettings protocol() {
   return p;
 }
 
+// The default wall on the sphere at level 1, its voiding steps made to fail below 175 ml,
+// run by the protocol with the ladder of levels under options o.
+CystometryResult run_wall_failing_below_175_ml(const RunOptions& o) {
+  const WallModel wall = sphere();
+  const ProtocolSettings p = protocol();
+  const std::unique_ptr<Material> material = make_material({"bladder", {}});
+  HydrostaticCavity cavity(wall, *material, p, o);
+  FailingModel failing(cavity, units::m3_from_ml(175.0));
+  const LevelLadder ladder(wall, *material, p, o);
+  return CystometryProtocol(p, o).run(failing, &ladder);
+}
+
 }  // namespace
 
 TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
@@ -144,11 +156,7 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
   ASSERT_TRUE(whole.completed) << whole.failure;
   EXPECT_FALSE(whole.summary.contains("voiding_tail"));
 
-  const std::unique_ptr<Material> material = make_material({"bladder", {}});
-  HydrostaticCavity cavity(wall, *material, p, o);
-  FailingModel failing(cavity, units::m3_from_ml(175.0));
-  const LevelLadder ladder(wall, *material, p, o);
-  const CystometryResult tail = CystometryProtocol(p, o).run(failing, &ladder);
+  const CystometryResult tail = run_wall_failing_below_175_ml(o);
   ASSERT_TRUE(tail.completed) << tail.failure;
 
   ASSERT_TRUE(tail.summary.contains("voiding_tail")) << tail.summary.dump(1);
@@ -196,15 +204,9 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
 // The fallback is labelled and can be switched off (--no-hand-over): the void then ends
 // where the wall stopped, with a note, and the card says no hand-over was allowed.
 TEST(VoidingTail, WithTheHandOverOffTheVoidEndsWhereTheWallStopped) {
-  const WallModel wall = sphere();
-  const ProtocolSettings p = protocol();
   RunOptions o;
   o.hand_over = false;
-  const std::unique_ptr<Material> material = make_material({"bladder", {}});
-  HydrostaticCavity cavity(wall, *material, p, o);
-  FailingModel failing(cavity, units::m3_from_ml(175.0));
-  const LevelLadder ladder(wall, *material, p, o);
-  const CystometryResult r = CystometryProtocol(p, o).run(failing, &ladder);
+  const CystometryResult r = run_wall_failing_below_175_ml(o);
   ASSERT_TRUE(r.completed) << r.failure;
   EXPECT_TRUE(r.card.hand_overs.empty());
   EXPECT_FALSE(r.summary.contains("voiding_tail"));

@@ -56,7 +56,6 @@ struct StepRequest {
 // (LevelLadder.h; docs/simulate.md, "Levels and their hand-overs"): the last converged state
 // of the model that could not go on. One record for every hand-over (2 → 1, 1 → 0).
 struct CarriedState {
-  int level = -1;                // of the model it comes from (-1: it carries nothing)
   double volume_m3 = 0.0;        // the urine volume now
   double pves_pa = 0.0;          // the urine pressure at the reference point now
   double outflow_m3_s = 0.0;     // through the urethra now

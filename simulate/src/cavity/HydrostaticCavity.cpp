@@ -205,7 +205,6 @@ void HydrostaticCavity::continue_from(const CarriedState& state) {
 
 CarriedState HydrostaticCavity::carried_state() const {
   CarriedState s;
-  s.level = level();
   s.volume_m3 = volume_;
   s.pves_pa = loads_.inside.p0;
   s.outflow_m3_s = q_out_;

@@ -23,7 +23,7 @@ constexpr int kMaxEvaluations = 200;
 
 LumpedCavity::LumpedCavity(const WallModel& wall, const Material& material,
                            const ProtocolSettings& settings)
-    : wall_(wall), material_(material), settings_(settings) {
+    : wall_(wall), material_(material), settings_(settings), x_drawn_(wall.nodes) {
   V_reference_ = enclosed_volume(wall, wall.nodes);
   R_ = std::cbrt(3.0 * V_reference_ / (4.0 * kPi));
   // Area-weighted mean thickness and the area centroid (the frames' scaling centre).
@@ -34,13 +34,13 @@ LumpedCavity::LumpedCavity(const WallModel& wall, const Material& material,
     const double A = 0.5 * (wall.nodes[t[1]] - a).cross(wall.nodes[t[2]] - a).norm();
     area += A;
     thickness_area += A * wall.thickness[e];
-    centroid_ += A * (a + wall.nodes[t[1]] + wall.nodes[t[2]]) / 3.0;
+    centre_drawn_ += A * (a + wall.nodes[t[1]] + wall.nodes[t[2]]) / 3.0;
   }
   H_ = thickness_area / area;
-  centroid_ /= area;
+  centre_drawn_ /= area;
   history_.assign(material.history_size(), 0.0);
   trial_history_ = history_;
-  volume_ = V_reference_;
+  volume_ = V_drawn_ = V_reference_;
   pabd_ = units::pa_from_cmh2o(settings.pabd_cmh2o);
 }
 
@@ -77,8 +77,13 @@ void LumpedCavity::take_over(const CarriedState& wall) {
   if (own > 0.0 && wall_pdet > 0.0)
     pressure_scale_ = std::clamp(wall_pdet / own, 1.0 / kLargestScale, kLargestScale);
   pdet_ = pressure_scale_ * own;
-  x_handed_ = wall.wall_positions;
-  V_handed_ = wall.volume_m3;
+  // From here the frames draw the wall as handed over, about its mean node.
+  x_drawn_ = wall.wall_positions;
+  V_drawn_ = wall.volume_m3;
+  centre_drawn_ = Eigen::Vector3d::Zero();
+  for (const auto& p : x_drawn_) centre_drawn_ += p;
+  centre_drawn_ /= static_cast<double>(x_drawn_.size());
+  taken_over_ = true;
   std::ostringstream note;
   note.precision(4);
   note << "the sphere-equivalent (level 0) carries on with its pressure scaled by "
@@ -193,18 +198,9 @@ double LumpedCavity::voided_volume(double V_base, const StepRequest& step) {
 }
 
 std::vector<Eigen::Vector3d> LumpedCavity::wall_positions() const {
-  if (!x_handed_.empty()) {  // the wall as handed over, about its mean node
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (const auto& p : x_handed_) centre += p;
-    centre /= static_cast<double>(x_handed_.size());
-    const double s = std::cbrt(std::max(volume_, 0.0) / V_handed_);
-    std::vector<Eigen::Vector3d> x(x_handed_);
-    for (auto& p : x) p = centre + s * (p - centre);
-    return x;
-  }
-  const double lambda = std::cbrt(volume_ / V_reference_);
-  std::vector<Eigen::Vector3d> x(wall_.nodes);
-  for (Eigen::Vector3d& p : x) p = centroid_ + lambda * (p - centroid_);
+  const double lambda = std::cbrt(std::max(volume_, 0.0) / V_drawn_);
+  std::vector<Eigen::Vector3d> x(x_drawn_);
+  for (Eigen::Vector3d& p : x) p = centre_drawn_ + lambda * (p - centre_drawn_);
   return x;
 }
 
@@ -222,7 +218,7 @@ std::vector<MembraneStressOutput> LumpedCavity::wall_stresses() const {
 }
 
 void LumpedCavity::add_summary(nlohmann::json& summary) const {
-  if (!x_handed_.empty()) {  // the tail of another level's voiding: its own key only
+  if (taken_over_) {  // the tail of another level's voiding: its own key only
     summary["voiding_tail"]["pressure_scale"] = pressure_scale_;
     return;
   }

@@ -77,12 +77,15 @@ class LumpedCavity final : public CavityModel {
   const Material& material_;
   const ProtocolSettings& settings_;
   double R_ = 0.0, H_ = 0.0, V_reference_ = 0.0;
-  Eigen::Vector3d centroid_ = Eigen::Vector3d::Zero();
   double volume_ = 0.0, V0_ = 0.0, pdet_ = 0.0, pabd_ = 0.0, q_out_ = 0.0;
   double pressure_scale_ = 1.0;  // take_over's shape factor
-  // The wall as take_over received it, and its volume (empty: a run started at level 0).
-  std::vector<Eigen::Vector3d> x_handed_;
-  double V_handed_ = 0.0;
+  // What the frames draw, scaled about centre_drawn_ by (V/V_drawn_)^(1/3): the reference
+  // wall about its area centroid, or after take_over the wall as handed over, about its
+  // mean node.
+  std::vector<Eigen::Vector3d> x_drawn_;
+  Eigen::Vector3d centre_drawn_ = Eigen::Vector3d::Zero();
+  double V_drawn_ = 0.0;
+  bool taken_over_ = false;
   std::vector<std::string> notes_;
   // The point's history: committed, and of the last trial evaluation.
   std::vector<double> history_, trial_history_;

@@ -233,7 +233,6 @@ void NavierStokesCavity::open_urethra(const UrethraLaw& urethra, double time_s) 
 // history, the pressure, the outflow and the volume bookkeeping (docs/navier-stokes.md §8).
 CarriedState NavierStokesCavity::carried_state() const {
   CarriedState s;
-  s.level = level();
   s.volume_m3 = coupling_->fluid_volume();
   s.pves_pa = pves();
   s.outflow_m3_s = coupling_->outflow();
@@ -367,7 +366,6 @@ void NavierStokesCavity::add_summary(nlohmann::json& s) const {
   s["min_tet_radius_ratio"] = min_quality_;
   s["remeshes"] = remeshes_;
   s["jet"] = jet_summary(jet_);
-  s["level1_from"] = nullptr;  // the protocol's, once it hands the voiding to level 1
   s["time_steps_s"] = {{"filling", options_.level2.fill_dt_s},
                        {"voiding", options_.level2.void_dt_s}};
 }

@@ -122,8 +122,7 @@ CystometryResult run_cystometry(const WallModel& given_wall, const MaterialSpec&
     model = std::make_unique<HydrostaticCavity>(wall, *material, settings, options);
   // The levels below the model's, should its voiding need them (docs/simulate.md).
   const LevelLadder ladder(wall, *material, settings, options);
-  CystometryResult result =
-      CystometryProtocol(settings, options).run(*model, options.hand_over ? &ladder : nullptr);
+  CystometryResult result = CystometryProtocol(settings, options).run(*model, &ladder);
   card.hand_overs = result.card.hand_overs;
   result.card = std::move(card);
   result.summary["model_card"] = result.card;

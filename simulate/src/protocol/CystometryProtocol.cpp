@@ -431,7 +431,8 @@ bool CystometryProtocol::hand_over(const std::string& failure) {
   LevelLadder::Step next = ladder_->below(*model_, failure);
   if (!next.model) return false;
   const double volume_ml = units::ml_from_m3(model_->volume());
-  hand_overs_.push_back({model_->level(), next.model->level(), volume_ml, time_, next.reason});
+  result_.card.hand_overs.push_back(
+      {model_->level(), next.model->level(), volume_ml, time_, next.reason});
   std::ostringstream note;
   note.precision(4);
   note << level_name(model_->level()) << " could not go on at V = " << volume_ml
@@ -448,9 +449,11 @@ bool CystometryProtocol::hand_over(const std::string& failure) {
 }
 
 // Where the run changed level, in the summary keys users and tests read: level1_from
-// (2 → 1: time and volume) and voiding_tail (→ 0: from where and why).
+// (2 → 1: time and volume; null for a level-2 run that voided to the end alone) and
+// voiding_tail (→ 0: from where and why).
 void CystometryProtocol::summarize_hand_overs(nlohmann::json& s) const {
-  for (const LevelHandOver& h : hand_overs_) {
+  if (top_->level() == 2) s["level1_from"] = nullptr;
+  for (const LevelHandOver& h : result_.card.hand_overs) {
     if (h.from == 2 && h.to == 1)
       s["level1_from"] = {{"time_s", h.time_s}, {"volume_ml", h.volume_ml}};
     if (h.to == 0)
@@ -463,7 +466,7 @@ void CystometryProtocol::summarize_hand_overs(nlohmann::json& s) const {
 
 std::string CystometryProtocol::progress_label() const {
   const std::string own = model_->progress_label();
-  if (hand_overs_.empty() || !own.empty()) return own;
+  if (result_.card.hand_overs.empty() || !own.empty()) return own;
   return " (level " + std::to_string(model_->level()) + ")";
 }
 
@@ -505,7 +508,6 @@ void CystometryProtocol::summarize(double seconds) {
   top_->add_summary(s);
   summarize_hand_overs(s);
   for (const auto& lower : lower_) lower->add_summary(s);
-  result_.card.hand_overs = hand_overs_;
 }
 
 }  // namespace vesica::simulate

@@ -96,7 +96,6 @@ class CystometryProtocol {
   CavityModel* top_ = nullptr;    // the model the run started with
   const LevelLadder* ladder_ = nullptr;
   std::vector<std::unique_ptr<CavityModel>> lower_;  // the levels handed down to, in order
-  std::vector<LevelHandOver> hand_overs_;
   StepRules rules_;
   std::unique_ptr<VtuSeriesWriter> series_;
   CystometryResult result_;
