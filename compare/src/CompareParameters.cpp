@@ -38,6 +38,9 @@ void add_calibration_entries(CompareOptions& o, ParameterTable& t) {
   t.integer("max_simulations", o.max_simulations, "-",
             NumberRange::at_least(1).at_most(1000).because("each is a full simulation"),
             "calibration budget of the mesh's simulations (its Jacobian included)");
+  t.flag("hand_over", m.model.run.hand_over,
+         "let a wall run's voiding go on one level down where the wall cannot take a step "
+         "(simulate's labelled fallback, off by default; the fitted card says so)");
   t.flag_off("no_surrogate", m.surrogate,
              "fit on the mesh alone, without the fast surrogate's search first");
   t.integer("surrogate_starts", m.surrogate_starts, "-", NumberRange::at_least(1).at_most(64),

@@ -46,6 +46,9 @@ class Reader {
     return v.get<bool>();
   }
   bool flag_or(const char* key, bool absent) const { return j_.contains(key) ? flag(key) : absent; }
+  double number_or(const char* key, double absent) const {
+    return j_.contains(key) ? number(key) : absent;
+  }
   std::string text(const char* key) const {
     const json& v = at(key);
     if (!v.is_string()) bad(key, "is not text");
@@ -178,7 +181,8 @@ json protocol_json(const ProtocolSettings& p) {
           {"wall_density_kg_m3", p.wall_density},
           {"support_kpa_per_mm", p.support_kpa_per_mm},
           {"wall_drag_pa_s_per_m", p.wall_drag_pa_s_per_m},
-          {"wrinkling", p.wrinkling}};
+          {"wrinkling", p.wrinkling},
+          {"wrinkle_regularisation", p.wrinkle_regularisation}};
 }
 
 void protocol_from(const Reader& r, ModelCard& c) {
@@ -197,6 +201,10 @@ void protocol_from(const Reader& r, ModelCard& c) {
   p.support_kpa_per_mm = r.number("support_kpa_per_mm");
   p.wall_drag_pa_s_per_m = r.number("wall_drag_pa_s_per_m");
   p.wrinkling = r.flag("wrinkling");
+  // A card from before the regularised tension field ran the pure one.
+  p.wrinkle_regularisation = r.number_or("wrinkle_regularisation", 0.0);
+  if (p.wrinkle_regularisation < 0.0 || p.wrinkle_regularisation > 0.5)
+    r.bad("wrinkle_regularisation", "is outside [0, 0.5]");
 }
 
 json voiding_json(const ProtocolSettings& p) {

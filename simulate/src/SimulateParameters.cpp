@@ -176,6 +176,10 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
            "viscous drag of the surrounding tissue on the wall");
   t.flag_off("no_wrinkling", p.wrinkling,
              "let the wall carry compression instead of wrinkling (tension field)");
+  t.number("wrinkle_regularisation", p.wrinkle_regularisation, "-",
+           NumberRange::at_least(0).at_most(0.5),
+           "share of the plain law's stress a wrinkled or slack element keeps (the compression "
+           "a wall of finite thickness carries before it buckles; 0: the pure tension field)");
 }
 
 void add_protocol_entries(ProtocolSettings& p, ParameterTable& t) {
@@ -206,10 +210,10 @@ void add_run_entries(RunOptions& r, ParameterTable& t) {
   t.flag("dynamic", r.dynamic, "Bossak-Newmark wall inertia instead of quasi-static steps");
   t.number("bossak_alpha", r.bossak_alpha, "-", NumberRange::at_least(-1.0 / 3.0).at_most(0),
            "Bossak alpha (0: no numerical damping)");
-  t.flag_off("no_hand_over", r.hand_over,
-             "a voiding step the running level cannot take ends voiding there, instead of "
-             "handing the rest to the level below (the fallback: level 2 to 1, 1 to its "
-             "sphere-equivalent)");
+  t.flag("hand_over", r.hand_over,
+         "a voiding step the running level cannot take hands the rest of voiding to the level "
+         "below (the fallback: level 2 to 1, 1 to its sphere-equivalent) instead of ending it "
+         "there");
   t.integer("level", r.level, "-", NumberRange::at_least(0).at_most(2),
             "0: lumped sphere-equivalent bladder (milliseconds); 1: urine as a hydrostatic "
             "volume (seconds); 2: Navier-Stokes urine on the tetrahedra of vesica-mesh "

@@ -438,7 +438,11 @@ TEST(Protocol, AVoidingStepThatCannotConvergeFailsFastInOneLine) {
   LumpedOptions lumped;
   lumped.fails_after_s = 105.0 + 1e-9;  // 100 s of filling, 5 s of hold: voiding fails
   LumpedBladder model(lumped);
-  const CystometryResult r = CystometryProtocol(p, RunOptions{}).run(model);
+  // With the fallback allowed but no level below the lumped bladder, the run fails (with
+  // it off, the default, voiding would end there with a note: VoidingTail tests).
+  RunOptions o;
+  o.hand_over = true;
+  const CystometryResult r = CystometryProtocol(p, o).run(model);
   EXPECT_FALSE(r.completed);
   // Every voiding attempt starts at t = 105 s: 0.1 s, then six halvings down to 1.5625 ms,
   // not the twelve of a filling step.

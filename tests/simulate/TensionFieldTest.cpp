@@ -2,7 +2,8 @@
 // one direction and squeezed across it beyond its natural width carries exactly the
 // uniaxial stress of that pull (found here by a 1-D root solve of the plain plane-stress
 // law, and by the incompressible closed form), whatever the squeeze; a sheet shortened in
-// every direction carries nothing; and the tangent matches central differences.
+// every direction carries nothing; and the tangent matches central differences. Its
+// regularised form keeps a share of the plain law where the sheet wrinkles.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -127,6 +128,45 @@ TEST(TensionField, WrinkledTangentMatchesFiniteDifferences) {
           [&](const Eigen::Matrix2d& C) { return relaxed(*m, C).S; }, C0, 1e-6);
       EXPECT_LT((fd - s.D).norm(), 1e-5 * s.D.norm()) << spec.name << "\n" << fd << "\n\n" << s.D;
     }
+  }
+}
+
+// The regularised tension field (physics.md §1.6) by its definition, from the two laws
+// above: a taut sheet is the plain law's; a slack one carries exactly ε of the plain law's
+// compression (the relaxed stress being zero); a wrinkled one ε of the plain stress plus
+// 1 − ε of the uniaxial pull; and its tangent is the derivative of its stress.
+TEST(TensionField, ARegularisedWallKeepsItsShareOfThePlainLaw) {
+  const double mu = 5e3, eps = 0.1;
+  const auto m = make_material({"neo-hookean", {{"mu", mu}, {"K", 1e3 * mu}}});
+  const auto regularised = [&](const Eigen::Matrix2d& C) {
+    return regularised_tension_field_stress(*m, C, MaterialPoint{}, 1.0, nullptr, nullptr, eps);
+  };
+  const auto plain = [&](const Eigen::Matrix2d& C) {
+    return plane_stress(*m, C, MaterialPoint{}, 1.0, nullptr, nullptr);
+  };
+  const Eigen::Matrix2d taut = stretched(1.3, 1.1, 0.4);
+  EXPECT_LT((regularised(taut).S - plain(taut).S).norm(), 1e-12 * plain(taut).S.norm());
+
+  const Eigen::Matrix2d slack = stretched(0.8, 0.9, 0.3);
+  const PlaneStressState s = regularised(slack);
+  EXPECT_EQ(s.wrinkling, Wrinkling::slack);
+  EXPECT_LT((s.S - eps * plain(slack).S).norm(), 1e-12 * plain(slack).S.norm());
+  EXPECT_LT(s.S.eigenvalues().real().maxCoeff(), 0.0);  // compression, a tenth of the plain law's
+
+  const double l1 = 1.3, S11 = uniaxial_S11(*m, l1);
+  const Eigen::Matrix2d wrinkled = stretched(l1, 0.6, 0.0);
+  const PlaneStressState w = regularised(wrinkled);
+  ASSERT_EQ(w.wrinkling, Wrinkling::wrinkled);
+  const Eigen::Matrix2d expected =
+      (1.0 - eps) * Eigen::Vector2d(S11, 0.0).asDiagonal().toDenseMatrix() +
+      eps * plain(wrinkled).S;
+  EXPECT_LT((w.S - expected).norm(), 1e-6 * S11);
+
+  for (const Eigen::Matrix2d& C0 : {slack, wrinkled}) {
+    const Eigen::Matrix3d D = regularised(C0).D;
+    const Eigen::Matrix3d fd = central_difference_tangent(
+        [&](const Eigen::Matrix2d& C) { return regularised(C).S; }, C0, 1e-6);
+    EXPECT_LT((fd - D).norm(), 1e-5 * D.norm()) << fd << "\n\n" << D;
   }
 }
 

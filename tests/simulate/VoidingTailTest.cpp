@@ -151,7 +151,8 @@ CystometryResult run_wall_failing_below_175_ml(const RunOptions& o) {
 TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
   const WallModel wall = sphere();
   const ProtocolSettings p = protocol();
-  const RunOptions o;
+  RunOptions o;
+  o.hand_over = true;  // the fallback, off by default
   const CystometryResult whole = run_cystometry(wall, {"bladder", {}}, p, o);
   ASSERT_TRUE(whole.completed) << whole.failure;
   EXPECT_FALSE(whole.summary.contains("voiding_tail"));
@@ -201,11 +202,11 @@ TEST(VoidingTail, AWallThatCannotGoOnIsContinuedByItsSphereEquivalent) {
               0.03 * whole.summary["qmax_ml_s"].get<double>());
 }
 
-// The fallback is labelled and can be switched off (--no-hand-over): the void then ends
+// The fallback is labelled and off by default (--hand-over turns it on): the void then ends
 // where the wall stopped, with a note, and the card says no hand-over was allowed.
 TEST(VoidingTail, WithTheHandOverOffTheVoidEndsWhereTheWallStopped) {
-  RunOptions o;
-  o.hand_over = false;
+  const RunOptions o;
+  EXPECT_FALSE(o.hand_over);
   const CystometryResult r = run_wall_failing_below_175_ml(o);
   ASSERT_TRUE(r.completed) << r.failure;
   EXPECT_TRUE(r.card.hand_overs.empty());
@@ -251,6 +252,7 @@ TEST(VoidingTail, AVoidHandedDownTwoLevelsFromLevelTwoEndsLikeALevelOneRun) {
 
   RunOptions o;
   o.level = 2;
+  o.hand_over = true;  // the fallback, off by default
   const std::unique_ptr<Material> material = make_material({"bladder", {}});
   fluid::NavierStokesCavity navier_stokes(wall, fluid::reference_urine(urine, wall), *material, p,
                                           o);

@@ -135,6 +135,7 @@ CystometryModel model_for(const CompareOptions& o, const RecordingAnalysis& a,
   m.protocol = s.protocol;
   m.protocol.posture = s.posture;
   m.protocol.gravity = false;
+  m.run.hand_over = s.run.hand_over;
   m.protocol.fill_rate_ml_min = fill_rate(o, a, notes);
   // The urethra opens on Pves = Pdet + Pabd: the model's abdomen at the recording's.
   const auto& r = a.recording;

@@ -29,6 +29,7 @@ HydrostaticCavity::HydrostaticCavity(const WallModel& wall, const Material& mate
       solver_(problem_, options.newton),
       x_(wall.nodes) {
   problem_.set_tension_field(settings.wrinkling);
+  problem_.set_wrinkle_regularisation(settings.wrinkle_regularisation);
   const Eigen::Vector3d g = protocol_gravity(settings);
   const Eigen::Vector3d x_ref = pressure_reference_point(wall, g);
   loads_ = surroundings(settings, g, x_ref);

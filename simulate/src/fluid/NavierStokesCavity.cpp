@@ -79,6 +79,7 @@ NavierStokesCavity::NavierStokesCavity(const WallModel& wall, const FluidMesh& u
       gravity_(protocol_gravity(settings)),
       x_ref_(pressure_reference_point(wall, gravity_)) {
   problem_.set_tension_field(settings.wrinkling);  // the same wall law as level 1
+  problem_.set_wrinkle_regularisation(settings.wrinkle_regularisation);
   fluid_.density = settings.urine_density;
   fluid_.viscosity = options.level2.urine_viscosity;
   fluid_.gravity = gravity_;

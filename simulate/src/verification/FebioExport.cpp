@@ -68,8 +68,9 @@ std::string header(const FebioLoadHistory& h, const std::vector<std::string>& ap
       "the outer face, half the wall's material volume outside vesica's mid-surface) with "
       "vesica's at the same pressures");
   x += febio_comment(
-      "vesica's membrane wrinkles instead of carrying compression and has no bending stiffness "
-      "(docs/physics.md §1.5); FEBio's shells carry both: the same on a taut wall");
+      "vesica's membrane wrinkles, keeping only a share of the plain law's compression, and "
+      "has no bending stiffness (docs/physics.md §1.5-1.6); FEBio's shells carry both: the "
+      "same on a taut wall");
   for (const std::string& a : approximations)
     x += febio_comment("approximated (febio_approximate): " + a);
   return x;

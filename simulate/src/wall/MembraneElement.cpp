@@ -48,13 +48,14 @@ MembraneResponse membrane_response(const MembraneGeometry& geo,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,
                                    double J2_guess, const double* history_old, double* history_new,
-                                   bool tension_field) {
+                                   bool tension_field, double wrinkle_regularisation) {
   MembraneResponse r;
   r.g.setZero();
   for (int a = 0; a < 3; ++a) r.g += x[a] * geo.dN.col(a).transpose();
   const Eigen::Matrix2d C2 = r.g.transpose() * r.g;
   r.stress = tension_field
-                 ? tension_field_stress(material, C2, point, J2_guess, history_old, history_new)
+                 ? regularised_tension_field_stress(material, C2, point, J2_guess, history_old,
+                                                    history_new, wrinkle_regularisation)
                  : plane_stress(material, C2, point, J2_guess, history_old, history_new);
   const Eigen::Matrix2d& S = r.stress.S;
   const double HA = geo.H * geo.area0;

@@ -34,7 +34,8 @@ std::array<Eigen::Vector3d, 2> element_fibers(const MembraneGeometry& geometry,
                                               const WallModel& wall, std::size_t e);
 
 // What one element gives at the current positions x (m). With tension_field the stress is
-// the wrinkling membrane's (TensionField.h), else the plain plane-stress law's.
+// the wrinkling membrane's (TensionField.h; wrinkle_regularisation its share ε of the plain
+// law), else the plain plane-stress law's.
 struct MembraneResponse {
   Vector9 f_int;  // internal nodal forces f_a = H A0 S_αβ g_α ∂N_a/∂s_β (N)
   Matrix9 K;  // material (𝔻_mem) + geometric (S_αβ ∂N_a/∂s_α ∂N_b/∂s_β I₃) (N/m)
@@ -46,7 +47,7 @@ MembraneResponse membrane_response(const MembraneGeometry& geometry,
                                    const std::array<Eigen::Vector3d, 3>& x,
                                    const Material& material, const MaterialPoint& point,
                                    double J2_guess, const double* history_old, double* history_new,
-                                   bool tension_field = false);
+                                   bool tension_field = false, double wrinkle_regularisation = 0.0);
 
 // Cauchy stress and thickness of a response, for output (WallStress.h).
 MembraneStressOutput membrane_stress_output(const MembraneGeometry& geometry,

@@ -156,8 +156,9 @@ void MembraneProblem::assemble(const std::vector<Eigen::Vector3d>& x, const Wall
     point.activation = loads.activation;
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
     double* h_new = history_size_ ? &self->history_new_[e * history_size_] : nullptr;
-    const MembraneResponse m = membrane_response(geometry_[e], xe, material_, point, J2_new_[e],
-                                                 h_old, h_new, tension_field_);
+    const MembraneResponse m =
+        membrane_response(geometry_[e], xe, material_, point, J2_new_[e], h_old, h_new,
+                          tension_field_, wrinkle_regularisation_);
     self->J2_new_[e] = m.stress.J2;
     self->wrinkling_[e] = m.stress.wrinkling;
     const PressureResponse p = pressure_response(xe, loads.inside, loads.outside);
@@ -270,7 +271,7 @@ std::vector<MembraneStressOutput> MembraneProblem::element_outputs(
     const double* h_old = history_size_ ? &history_old_[e * history_size_] : nullptr;
     const MembraneResponse m = membrane_response(
         geometry_[e], corners(x, wall_.triangles[e]), material_, point, J2_old_[e], h_old,
-        history_size_ ? scratch.data() : nullptr, tension_field_);
+        history_size_ ? scratch.data() : nullptr, tension_field_, wrinkle_regularisation_);
     out[e] = membrane_stress_output(geometry_[e], m);
   });
   return out;

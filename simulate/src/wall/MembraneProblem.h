@@ -67,6 +67,8 @@ class MembraneProblem {
   // so that the element-level verification sees the plain plane-stress law.
   void set_tension_field(bool on) { tension_field_ = on; }
   bool tension_field() const { return tension_field_; }
+  // The share ε of the plain law a wrinkled or slack element keeps (TensionField.h).
+  void set_wrinkle_regularisation(double epsilon) { wrinkle_regularisation_ = epsilon; }
 
   // How many elements the last assemble() found taut, wrinkled and slack (TensionField.h):
   // the step log of a cystometry (docs/simulate.md, "Step log").
@@ -104,6 +106,7 @@ class MembraneProblem {
   const Material& material_;
   int threads_;
   bool tension_field_ = false;
+  double wrinkle_regularisation_ = 0.0;
   std::vector<MembraneGeometry> geometry_;
   std::vector<MaterialPoint> points_;
   std::vector<int> dof_;

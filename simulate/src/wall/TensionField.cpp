@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace vesica::simulate {
 namespace {
@@ -366,6 +367,26 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
   s.D -= correction;
   s.wrinkling = Wrinkling::wrinkled;
   return s;
+}
+
+PlaneStressState regularised_tension_field_stress(const Material& material,
+                                                  const Eigen::Matrix2d& C2,
+                                                  const MaterialPoint& point, double J2_guess,
+                                                  const double* history_old, double* history_new,
+                                                  double epsilon) {
+  PlaneStressState relaxed =
+      tension_field_stress(material, C2, point, J2_guess, history_old, history_new);
+  if (!(epsilon > 0.0) || relaxed.wrinkling == Wrinkling::taut) return relaxed;
+  // The plain law's share, evaluated with its own history scratch: the committed history of
+  // a wrinkled element is that of its relaxed state C*.
+  thread_local std::vector<double> scratch;
+  scratch.assign(material.history_size(), 0.0);
+  const PlaneStressState plain =
+      plane_stress(material, C2, point, relaxed.J2 > 0.0 ? relaxed.J2 : J2_guess, history_old,
+                   history_new != nullptr ? scratch.data() : nullptr);
+  relaxed.S = (1.0 - epsilon) * relaxed.S + epsilon * plain.S;
+  relaxed.D = (1.0 - epsilon) * relaxed.D + epsilon * plain.D;
+  return relaxed;
 }
 
 }  // namespace vesica::simulate

@@ -26,4 +26,15 @@ PlaneStressState tension_field_stress(const Material& material, const Eigen::Mat
                                       const MaterialPoint& point, double J2_guess,
                                       const double* history_old, double* history_new);
 
+// The tension field of a wall that is not quite a membrane (docs/physics.md §1.6): a wrinkled
+// or slack element keeps the share ε (`wrinkle_regularisation`) of the plain law's stress
+// and tangent, S = (1 − ε) S* + ε S(C), the compression a wall of finite thickness carries
+// before it buckles. A taut element is unchanged; ε = 0 is tension_field_stress(). The
+// history written is the relaxed state's (the plain share's is discarded).
+PlaneStressState regularised_tension_field_stress(const Material& material,
+                                                  const Eigen::Matrix2d& C2,
+                                                  const MaterialPoint& point, double J2_guess,
+                                                  const double* history_old, double* history_new,
+                                                  double epsilon);
+
 }  // namespace vesica::simulate

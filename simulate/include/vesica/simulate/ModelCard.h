@@ -56,7 +56,7 @@ struct RunNumerics {
   int level = 1;
   bool dynamic = false;
   double bossak_alpha = 0.0;
-  bool hand_over = true;  // RunOptions::hand_over: the fallback down the levels allowed
+  bool hand_over = false;  // RunOptions::hand_over: the fallback down the levels allowed
   double max_fill_step_ml = 0.0;
   double max_void_step_s = 0.0;
   double max_void_step_ml = 0.0;

@@ -78,6 +78,10 @@ struct ProtocolSettings {
   // law, compression included (which makes the slack collapse below the reference volume
   // at the end of voiding slow and fragile).
   bool wrinkling = true;
+  // The share ε of the plain law's stress and stiffness a wrinkled or slack element keeps
+  // (docs/physics.md §1.6): a wall a few millimetres thick carries some compression before
+  // it buckles, and the crumpling wall near empty keeps a unique, stable shape.
+  double wrinkle_regularisation = 0.1;
   // Prestress reference: the imaged geometry is in equilibrium at this pressure.
   double image_pressure_cmh2o = 10.0;
 };
@@ -129,11 +133,11 @@ struct RunOptions {
   // quasi-static steps; α_B ∈ [-1/3, 0] (0: no numerical damping).
   bool dynamic = false;
   double bossak_alpha = -0.1;
-  // A voiding step the running level cannot take, after its cut-backs and with the urethra
-  // open, hands the rest of the voiding to the level below (2 → 1 → 0; docs/simulate.md,
-  // "Levels and their hand-overs"): the fallback. false: voiding ends there instead, with
-  // a note, so that the wall's own void is what the results show.
-  bool hand_over = true;
+  // The fallback, off by default: a voiding step the running level cannot take, after its
+  // cut-backs and with the urethra open, hands the rest of the voiding to the level below
+  // (2 → 1 → 0; docs/simulate.md, "Levels and their hand-overs"). false: voiding ends
+  // there, with a note, so that the wall's own void is what the results show.
+  bool hand_over = false;
   ReferenceState reference = ReferenceState::Scale;
   // The wall-and-cavity Newton of level 1 (and of level 2's settling to the start volume).
   // Chord iterations while the residual falls tenfold per iteration: fewer factorizations
