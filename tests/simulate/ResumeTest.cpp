@@ -226,18 +226,19 @@ TEST(Resume, AKilledRunExitsWithTheSignalsStatusAndResumesOnTheCommandLine) {
 }
 
 TEST(Resume, AStopInTheMiddleOfAStepCheckpointsTheLastCompletedStep) {
-  // A SIGTERM at the 16th factorisation (tests/support/StopAfterFactorizations.c,
+  // A SIGTERM at the 30th factorisation (tests/support/StopAfterFactorizations.c,
   // preloaded), inside a filling step (the tangent is reused within and across filling
-  // steps, so there are fewer factorisations than iterations, and the 16th comes before
-  // voiding begins): the run stops there (not at the end of the step), its checkpoint is
-  // the step before, and the run resumed from it is the run never stopped (a batch
-  // scheduler's SIGTERM).
+  // steps, so there are fewer factorisations than iterations, and the 30th, after the settling,
+  // comes before voiding begins): the run stops there (not at the end of the step), its checkpoint
+  // is the step before, and the run resumed from it is the run never stopped (a batch scheduler's
+  // SIGTERM).
   CliRuns cli("resume-mid-step");
   ASSERT_EQ(cli.simulate("whole", "").exit_code, 0);
-  const CommandResult stopped = run_command(
-      "LD_PRELOAD='" VESICA_STOP_AFTER_FACTORIZATIONS_LIBRARY
-      "' VESICA_TEST_STOP_AFTER_FACTORIZATIONS=16 timeout 120 " + cli.bin + "/vesica-simulate " +
-      cli.mesh + " -o " + (cli.dir / "resumed").string() + " --capacity-ml 200 --no-series 2>&1");
+  const CommandResult stopped =
+      run_command("LD_PRELOAD='" VESICA_STOP_AFTER_FACTORIZATIONS_LIBRARY
+                  "' VESICA_TEST_STOP_AFTER_FACTORIZATIONS=30 timeout 120 " +
+                  cli.bin + "/vesica-simulate " + cli.mesh + " -o " +
+                  (cli.dir / "resumed").string() + " --capacity-ml 200 --no-series 2>&1");
   EXPECT_EQ(stopped.exit_code, 128 + 15) << stopped.output;
   EXPECT_NE(stopped.output.find("interrupted by SIGTERM; checkpoint at t = "), std::string::npos)
       << stopped.output;

@@ -157,10 +157,15 @@ void CystometryProtocol::settle() {
   const double target = units::m3_from_ml(settings_.start_ml);
   if (model_->needs_settling(target)) {
     step_to_volume(model_->volume());
+    // From the stress-free reference the membrane has no stiffness out of its plane: a
+    // full step there fails its Newton iterations, halving by halving, at the cost of a
+    // whole failed Newton each (the most of a fine wall's run). So the moves start at a
+    // sixteenth of the longest and double after every one that needed no cut-back.
     const double dv = units::m3_from_ml(options_.max_fill_step_ml);
+    double move = dv / 16.0;
     while (std::abs(model_->volume() - target) > 1e-12 * target) {
-      const double next = model_->volume() + std::clamp(target - model_->volume(), -dv, dv);
-      step_to_volume(next);
+      const double next = model_->volume() + std::clamp(target - model_->volume(), -move, move);
+      move = step_to_volume(next) == 0 ? std::min(dv, 2.0 * move) : move;
     }
   }
   model_->start_clock();
@@ -170,14 +175,14 @@ void CystometryProtocol::settle() {
   record();
 }
 
-void CystometryProtocol::step_to_volume(double V) {
+int CystometryProtocol::step_to_volume(double V) {
   std::string failure;
   for (int cut = 0; cut <= rules_.max_settle_cutbacks; ++cut) {
     const double target = model_->volume() + (V - model_->volume()) / std::pow(2.0, cut);
     const StepResult r = model_->try_volume_step(target, loads_at(time_));
     if (r.converged) {
-      if (cut > 0) step_to_volume(V);  // the rest of the way from the shorter move
-      return;
+      // the rest of the way from the shorter move
+      return cut > 0 ? cut + step_to_volume(V) : 0;
     }
     failure = r.failure;
   }

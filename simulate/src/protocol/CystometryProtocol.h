@@ -58,7 +58,8 @@ class CystometryProtocol {
   void hold();
   void void_bladder();
   // Moves to volume V (m³) without time passing, halving the move on failure.
-  void step_to_volume(double volume_m3);
+  // Returns how many cut-backs the move needed (0: it went in one step).
+  int step_to_volume(double volume_m3);
   // One timed step of at most dt with inflow q_in (m³/s), the urethra open or closed,
   // halving dt on failure; throws StepFailed after the model's cut-backs.
   StepResult advance(double dt, double q_in, bool outlet);
