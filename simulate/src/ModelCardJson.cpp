@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "vesica/core/Error.h"
+#include "vesica/core/NumberRange.h"
 
 namespace vesica::simulate {
 namespace {
@@ -203,8 +204,10 @@ void protocol_from(const Reader& r, ModelCard& c) {
   p.wrinkling = r.flag("wrinkling");
   // A card from before the regularised tension field ran the pure one.
   p.wrinkle_regularisation = r.number_or("wrinkle_regularisation", 0.0);
-  if (p.wrinkle_regularisation < 0.0 || p.wrinkle_regularisation > 0.5)
-    r.bad("wrinkle_regularisation", "is outside [0, 0.5]");
+  if (p.wrinkle_regularisation < 0.0 ||
+      p.wrinkle_regularisation > ProtocolSettings::kMaxWrinkleRegularisation)
+    r.bad("wrinkle_regularisation",
+          "is outside [0, " + format_number(ProtocolSettings::kMaxWrinkleRegularisation) + "]");
 }
 
 json voiding_json(const ProtocolSettings& p) {

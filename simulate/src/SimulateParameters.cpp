@@ -177,7 +177,7 @@ void add_wall_entries(SimulateSettings& s, ParameterTable& t) {
   t.flag_off("no_wrinkling", p.wrinkling,
              "let the wall carry compression instead of wrinkling (tension field)");
   t.number("wrinkle_regularisation", p.wrinkle_regularisation, "-",
-           NumberRange::at_least(0).at_most(0.5),
+           NumberRange::at_least(0).at_most(ProtocolSettings::kMaxWrinkleRegularisation),
            "share of the plain law's stress a wrinkled or slack element keeps (the compression "
            "a wall of finite thickness carries before it buckles; 0: the pure tension field)");
 }

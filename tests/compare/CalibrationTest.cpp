@@ -210,7 +210,7 @@ TEST(Calibration, VoidingParametersWithoutAVoidingInTheRecordingAreRefused) {
 // straight line; Qmax within 10 % of 17 ml/s; flow time within 20 % of the measured 39 s;
 // voided volume within 5 % of 350 ml; PdetQmax within 3 cmH2O of 5; Q(t) correlation >= 0.9
 // after aligning the onsets. Where the wall cannot take a late voiding step (a few
-// elements of the CT wall switching between taut and slack 20-30 ml before its end) its
+// elements of the CT wall switching between taut and slack late in voiding) its
 // sphere-equivalent carries the rest of voiding: the fit allows that labelled fallback
 // (--hand-over, off by default), and its notes and card say so (docs/simulate.md, "The
 // tail of voiding").

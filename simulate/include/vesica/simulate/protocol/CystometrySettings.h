@@ -82,6 +82,7 @@ struct ProtocolSettings {
   // (docs/physics.md §1.6): a wall a few millimetres thick carries some compression before
   // it buckles, and the crumpling wall near empty keeps a unique, stable shape.
   double wrinkle_regularisation = 0.1;
+  static constexpr double kMaxWrinkleRegularisation = 0.5;  // the parameter's range: [0, this]
   // Prestress reference: the imaged geometry is in equilibrium at this pressure.
   double image_pressure_cmh2o = 10.0;
 };
