@@ -68,11 +68,13 @@ TEST(ParameterCatalogue, EachParameterHasOneNameOneKeyAndAFitRangeInsideItsRange
       EXPECT_GE(*p.fit_start, p.fit_range->lower);
       EXPECT_LE(*p.fit_start, p.fit_range->upper);
     }
-    for (const NamedMaterial& m : named_materials())
-      if (p.applies_to(m.name) && !p.per_branch)
+    for (const NamedMaterial& m : named_materials()) {
+      if (p.applies_to(m.name) && !p.per_branch) {
         EXPECT_TRUE(p.range.contains(default_in_unit(p, m.name)))
             << m.name << "'s default " << default_in_unit(p, m.name) << " is outside "
             << p.range.describe(p.unit);
+      }
+    }
   }
   // The earlier spellings of the contractility still find it.
   EXPECT_EQ(find_parameter("detrusor_kpa"), &catalogue_parameter("contractility"));

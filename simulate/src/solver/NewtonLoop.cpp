@@ -29,6 +29,17 @@ bool NewtonLoop::diverging(const NewtonReport& report, int iteration) const {
   return r > options_.divergence_ratio * report.residual_norms[1] && r > options_.divergence_floor;
 }
 
+// The residual norms hold one entry per iteration up to `iteration`.
+bool NewtonLoop::stagnating(const NewtonReport& report, int iteration) const {
+  const int window = options_.stagnation_window;
+  if (options_.stagnation_factor <= 0.0 || window <= 0 || iteration <= window) return false;
+  const auto& r = report.residual_norms;
+  const auto recent = r.begin() + (iteration - window + 1);
+  const double best_before = *std::min_element(r.begin(), recent);
+  const double best_recent = *std::min_element(recent, r.begin() + iteration + 1);
+  return best_recent > options_.stagnation_factor * best_before;
+}
+
 NewtonReport NewtonLoop::solve(NewtonSystem& system) {
   NewtonReport report;
   double last_move = INFINITY;
@@ -65,6 +76,10 @@ NewtonReport NewtonLoop::solve(NewtonSystem& system) {
         if (it == budget(report)) break;
         if (diverging(report, it)) {
           report.failure = "Newton iteration diverges";
+          return report;
+        }
+        if (stagnating(report, it)) {
+          report.failure = "Newton iteration stagnates";
           return report;
         }
         equilibrium = check.equilibrium;

@@ -107,6 +107,7 @@ class NewtonLoop {
  private:
   int budget(const NewtonReport& report) const;
   bool diverging(const NewtonReport& report, int iteration) const;
+  bool stagnating(const NewtonReport& report, int iteration) const;
   // Solves for the increment on the foundation; returns its longest wall move.
   double regularized_increment(NewtonSystem& system, bool reuse, bool& reusable,
                                NewtonReport& report);

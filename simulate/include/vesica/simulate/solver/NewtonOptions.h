@@ -62,6 +62,13 @@ struct NewtonOptions {
   // divergence_ratio times that after the first iteration and divergence_floor (0 = never).
   double divergence_ratio = 1e3;
   double divergence_floor = 1e-3;
+  // Stagnation, for callers that cut a failed step back (the cystometry): give up when the
+  // smallest relative residual of the last stagnation_window iterations is above
+  // stagnation_factor times the smallest before them (0 = never). A wall whose few elements
+  // switch between taut, wrinkled and slack from one iterate to the next can hold its
+  // residual on a plateau for dozens of iterations; the shorter step converges in a few.
+  int stagnation_window = 8;
+  double stagnation_factor = 0.0;
   // Tangent reuse (chord iterations): keep the last factorization while the residual falls
   // at least this fast, |r|_k ≤ ratio |r|_k−1 (0 = a fresh tangent every iteration:
   // quadratic convergence). A factorization of the indefinite K past the limit point costs
