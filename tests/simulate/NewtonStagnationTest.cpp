@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "solver/NewtonLoop.h"
@@ -47,13 +48,16 @@ class ScriptedSystem : public NewtonSystem {
   Eigen::SparseMatrix<double> K_;
 };
 
-NewtonOptions with_stagnation(double factor, int max_iterations) {
+// The loop's solve of the scripted system with the stagnation test's factor (0: off), a
+// window of 8 and no line search.
+NewtonReport solve_scripted(std::vector<double> script, double factor, int max_iterations) {
   NewtonOptions o;
   o.max_iterations = max_iterations;
   o.stagnation_window = 8;
   o.stagnation_factor = factor;
   o.line_search.enabled = false;
-  return o;
+  ScriptedSystem system(std::move(script));
+  return NewtonLoop(o).solve(system);
 }
 
 // 1e-2, 1e-3, then 1e-4 for ever.
@@ -66,9 +70,7 @@ std::vector<double> plateau() {
 }  // namespace
 
 TEST(NewtonStagnation, AResidualOnAPlateauEndsTheSolveEightIterationsIntoIt) {
-  ScriptedSystem system(plateau());
-  NewtonLoop loop(with_stagnation(0.5, 25));
-  const NewtonReport r = loop.solve(system);
+  const NewtonReport r = solve_scripted(plateau(), 0.5, 25);
   EXPECT_FALSE(r.converged);
   EXPECT_EQ(r.failure, "Newton iteration stagnates");
   // The plateau starts at the residual of iteration 2; iterations 3 to 10 find nothing
@@ -82,17 +84,13 @@ TEST(NewtonStagnation, ASlowButSteadyResidualStillConverges) {
   // 1e-2 to the tolerance 1e-9: 153 iterations, first below at k = ⌈ln(1e-7)/ln(0.9)⌉.
   std::vector<double> script;
   for (int k = 0; k < 200; ++k) script.push_back(1e-2 * std::pow(0.9, k));
-  ScriptedSystem system(script);
-  NewtonLoop loop(with_stagnation(0.5, 200));
-  const NewtonReport r = loop.solve(system);
+  const NewtonReport r = solve_scripted(script, 0.5, 200);
   EXPECT_TRUE(r.converged) << r.failure;
   EXPECT_EQ(r.iterations, static_cast<int>(std::ceil(std::log(1e-7) / std::log(0.9))));
 }
 
 TEST(NewtonStagnation, WithTheTestOffAPlateauRunsTheWholeBudget) {
-  ScriptedSystem system(plateau());
-  NewtonLoop loop(with_stagnation(0.0, 25));
-  const NewtonReport r = loop.solve(system);
+  const NewtonReport r = solve_scripted(plateau(), 0.0, 25);
   EXPECT_FALSE(r.converged);
   EXPECT_EQ(r.failure, "no convergence in 25 iterations");
   EXPECT_EQ(NewtonOptions{}.stagnation_factor, 0.0);  // off unless a caller cuts back

@@ -147,11 +147,12 @@ struct RunOptions {
   // linearly (elements switch between slack and taut), and a step cut back earlier wastes
   // all its iterations; but one whose residual has stopped falling (no halving in 8
   // iterations) is cut back at once, since it mostly fails after all its iterations, or
-  // converges after many, where the shorter step takes a few. Converged at a residual of 1e-7 of
-  // the gross pressure force and a last increment of 1e-6 of the wall's size (sub-micrometre on a
-  // bladder): the defaults' extra digits cost many iterations of the slack collapse at the end of
-  // voiding and change no reported result. No preconditioned reuse (NewtonOptions.h): on
-  // a wrinkling wall GMRES misses its tolerance too often for it to pay (docs/simulate.md).
+  // converges after many, where the shorter step takes a few. Converged at a residual of
+  // 1e-7 of the gross pressure force and a last increment of 1e-6 of the wall's size
+  // (sub-micrometre on a bladder): the defaults' extra digits cost many iterations of the
+  // slack collapse at the end of voiding and change no reported result. No preconditioned reuse
+  // (NewtonOptions.h): on a wrinkling wall GMRES misses its tolerance too often for it to pay
+  // (docs/simulate.md).
   NewtonOptions newton = [] {
     NewtonOptions o;
     o.reuse_tangent_ratio = 0.1;
